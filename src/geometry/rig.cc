@@ -1,0 +1,59 @@
+#include "geometry/rig.h"
+
+#include <cmath>
+
+namespace parkloc::geometry {
+
+const RigCamera* Rig::find(const std::string& name) const {
+  for (const auto& camera : cameras)
+    if (camera.name == name) return &camera;
+  return nullptr;
+}
+
+Eigen::Matrix3d vehicleFromCameraRotation(double yaw, double pitch_down, double roll) {
+  // A camera looking along vehicle +x: camera z -> vehicle x, camera x -> vehicle -y,
+  // camera y -> vehicle -z.
+  Eigen::Matrix3d forward;
+  forward.col(0) = -Eigen::Vector3d::UnitY();
+  forward.col(1) = -Eigen::Vector3d::UnitZ();
+  forward.col(2) = Eigen::Vector3d::UnitX();
+  // Pitching down rotates the optical axis about the vehicle's y axis (positive = down).
+  return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(pitch_down, Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+             .toRotationMatrix() *
+         forward;
+}
+
+Rig defaultRig() {
+  CameraModel fisheye;
+  fisheye.type = CameraModelType::kFisheye;
+  fisheye.width = 1280;
+  fisheye.height = 800;
+  // Near-equidistant lens: about 98 degrees off-axis at the left and right image edges
+  // (a 197-degree horizontal field of view); the image corners see 118 degrees.
+  fisheye.fx = fisheye.fy = 365.0;
+  fisheye.cx = 639.5;
+  fisheye.cy = 399.5;
+  fisheye.distortion = {0.015, -0.003, 0.0005, -0.00005};
+  fisheye.max_theta = 2.15;  // 123 degrees; theta_d stays monotonic up to here
+
+  auto make = [&](const std::string& name, Eigen::Vector3d position, double yaw, double pitch) {
+    RigCamera camera;
+    camera.name = name;
+    camera.model = fisheye;
+    camera.vehicle_from_camera.linear() = vehicleFromCameraRotation(yaw, pitch);
+    camera.vehicle_from_camera.translation() = position;
+    return camera;
+  };
+  const double deg = M_PI / 180.0;
+  Rig rig;
+  // A 4.7 m car: 2.8 m wheelbase, 0.9 m front and 1.0 m rear overhang, 1.85 m wide.
+  rig.cameras.push_back(make("front", {3.70, 0.0, 0.60}, 0.0, 20.0 * deg));
+  rig.cameras.push_back(make("rear", {-1.00, 0.0, 0.90}, M_PI, 30.0 * deg));
+  rig.cameras.push_back(make("left", {2.00, 0.95, 1.00}, M_PI / 2, 55.0 * deg));
+  rig.cameras.push_back(make("right", {2.00, -0.95, 1.00}, -M_PI / 2, 55.0 * deg));
+  return rig;
+}
+
+}  // namespace parkloc::geometry

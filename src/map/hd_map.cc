@@ -1,0 +1,85 @@
+#include "map/hd_map.h"
+
+#include <cmath>
+#include <set>
+
+#include "common/error.h"
+
+namespace parkloc::map {
+
+HdMap::HdMap(std::vector<Landmark> landmarks, std::string name)
+    : name_(std::move(name)), landmarks_(std::move(landmarks)) {
+  if (const std::string problem = validate(landmarks_); !problem.empty())
+    throw InputError("map " + (name_.empty() ? std::string("(unnamed)") : name_) + ": " + problem);
+  for (size_t i = 0; i < landmarks_.size(); ++i) {
+    by_text_.emplace(landmarks_[i].text, i);
+    by_id_.emplace(landmarks_[i].id, i);
+    grid_[cellOf(landmarks_[i].position.head<2>())].push_back(i);
+  }
+}
+
+std::string HdMap::validate(const std::vector<Landmark>& landmarks) {
+  std::set<std::string> ids;
+  std::set<std::pair<std::string, std::string>> numbers;  // (level, text)
+  for (const auto& l : landmarks) {
+    const std::string who = "landmark '" + l.id + "'";
+    if (l.id.empty()) return "a landmark has an empty id";
+    if (!ids.insert(l.id).second) return "duplicate id '" + l.id + "'";
+    if (l.text.empty()) return who + ": empty text";
+    if (!l.position.allFinite() || !std::isfinite(l.heading) || !std::isfinite(l.width) ||
+        !std::isfinite(l.height) || !l.normal.allFinite())
+      return who + ": non-finite value";
+    if (l.width <= 0.0 || l.height <= 0.0) return who + ": width and height must be positive";
+    if (l.surface == Surface::kVertical && std::abs(l.normal.norm() - 1.0) > 1e-3)
+      return who + ": vertical text needs a unit face normal";
+    if (l.cls == TextClass::kParkingNumber && !numbers.insert({l.level, l.text}).second)
+      return who + ": parking number '" + l.text + "' appears twice on level '" + l.level + "'";
+  }
+  return "";
+}
+
+std::vector<const Landmark*> HdMap::findByText(const std::string& text,
+                                               const std::string& level) const {
+  std::vector<const Landmark*> out;
+  const auto [begin, end] = by_text_.equal_range(text);
+  for (auto it = begin; it != end; ++it) {
+    const Landmark& l = landmarks_[it->second];
+    if (level.empty() || l.level == level) out.push_back(&l);
+  }
+  return out;
+}
+
+const Landmark* HdMap::findById(const std::string& id) const {
+  const auto it = by_id_.find(id);
+  return it == by_id_.end() ? nullptr : &landmarks_[it->second];
+}
+
+HdMap::CellKey HdMap::cellOf(const Eigen::Vector2d& p) const {
+  const long long ix = static_cast<long long>(std::floor(p.x() / cell_size_));
+  const long long iy = static_cast<long long>(std::floor(p.y() / cell_size_));
+  return (ix << 32) ^ (iy & 0xffffffffLL);
+}
+
+std::vector<const Landmark*> HdMap::withinRadius(const Eigen::Vector2d& center, double radius,
+                                                 const std::string& level) const {
+  std::vector<const Landmark*> out;
+  if (!(radius >= 0.0) || !center.allFinite()) return out;
+  const long long x0 = static_cast<long long>(std::floor((center.x() - radius) / cell_size_));
+  const long long x1 = static_cast<long long>(std::floor((center.x() + radius) / cell_size_));
+  const long long y0 = static_cast<long long>(std::floor((center.y() - radius) / cell_size_));
+  const long long y1 = static_cast<long long>(std::floor((center.y() + radius) / cell_size_));
+  for (long long ix = x0; ix <= x1; ++ix) {
+    for (long long iy = y0; iy <= y1; ++iy) {
+      const auto it = grid_.find((ix << 32) ^ (iy & 0xffffffffLL));
+      if (it == grid_.end()) continue;
+      for (const size_t i : it->second) {
+        const Landmark& l = landmarks_[i];
+        if ((l.position.head<2>() - center).norm() <= radius && (level.empty() || l.level == level))
+          out.push_back(&l);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace parkloc::map

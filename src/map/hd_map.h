@@ -1,0 +1,48 @@
+#pragma once
+// The HD map: text landmarks with lookup by exact text and a spatial index for radius
+// queries. Pure in-memory data; reading and writing GeoJSON lives in io/.
+#include <Eigen/Core>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "map/landmark.h"
+
+namespace parkloc::map {
+
+class HdMap {
+ public:
+  HdMap() = default;
+  // Checks the landmarks (see validate) and builds the indexes; throws InputError.
+  explicit HdMap(std::vector<Landmark> landmarks, std::string name = "");
+
+  const std::string& name() const { return name_; }
+  const std::vector<Landmark>& landmarks() const { return landmarks_; }
+  size_t size() const { return landmarks_.size(); }
+
+  // Landmarks whose text equals `text` exactly (on every level when `level` is empty).
+  std::vector<const Landmark*> findByText(const std::string& text,
+                                          const std::string& level = "") const;
+  const Landmark* findById(const std::string& id) const;
+  // Landmarks whose centre lies within `radius` metres (x-y distance) of `center`.
+  std::vector<const Landmark*> withinRadius(const Eigen::Vector2d& center, double radius,
+                                            const std::string& level = "") const;
+
+  // Empty when valid, else the first problem: duplicate id, a parking number twice on one
+  // level, non-finite or non-positive size, empty text.
+  static std::string validate(const std::vector<Landmark>& landmarks);
+
+ private:
+  using CellKey = long long;
+  CellKey cellOf(const Eigen::Vector2d& p) const;
+
+  std::string name_;
+  std::vector<Landmark> landmarks_;
+  std::unordered_multimap<std::string, size_t> by_text_;
+  std::unordered_map<std::string, size_t> by_id_;
+  // Uniform grid over x-y: cell -> landmark indices.
+  double cell_size_ = 4.0;
+  std::unordered_map<CellKey, std::vector<size_t>> grid_;
+};
+
+}  // namespace parkloc::map

@@ -1,0 +1,43 @@
+#pragma once
+// Per-image text labels of the synthetic dataset: labels/<camera>/<timestamp>.json, and the
+// same polygons as ICDAR-2015 text lines (x1,y1,...,x4,y4,transcription). Schema:
+// {"camera": "front", "timestamp": 12.35, "width": 1280, "height": 800,
+//  "instances": [{"polygon": [[x, y] x4], "text": "B2-117", "class_id": 1,
+//                 "class": "parking_number", "occluded_fraction": 0.0, "truncated": false,
+//                 "landmark_id": "B2-117", "rotation_deg": 37.0}]}
+// Polygons are in pixels (OpenCV convention), reading order: top-left, top-right,
+// bottom-right, bottom-left of the text as it reads. rotation_deg is the angle of the
+// reading direction in the image (0 = left to right, 180 = upside down).
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "map/landmark.h"
+
+namespace parkloc::io {
+
+struct LabelInstance {
+  std::array<Eigen::Vector2d, 4> polygon;
+  std::string text;
+  map::TextClass cls = map::TextClass::kParkingNumber;
+  double occluded_fraction = 0.0;
+  bool truncated = false;
+  std::string landmark_id;
+  double rotation_deg = 0.0;
+};
+
+struct ImageLabels {
+  std::string camera;
+  double timestamp = 0.0;
+  int width = 0;
+  int height = 0;
+  std::vector<LabelInstance> instances;
+};
+
+ImageLabels loadLabels(const std::string& path);  // throws InputError
+void saveLabels(const ImageLabels& labels, const std::string& path);
+// ICDAR-2015 ground-truth text file; '###' marks instances to ignore (occluded >= 0.5).
+void saveIcdarLabels(const ImageLabels& labels, const std::string& path);
+
+}  // namespace parkloc::io

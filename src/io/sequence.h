@@ -1,0 +1,63 @@
+#pragma once
+// A drive: one self-contained sequence folder as `parkloc simulate` writes it
+//   calib.yaml  map.geojson  poses.tum (optional)  odometry.csv (optional)  meta.json (optional)
+//   images/<camera>/<timestamp>.jpg|png   labels/<camera>/<timestamp>.json (optional)
+// File stems are timestamps in seconds printed with six decimals ("12.350000").
+// A frame set is the images of all cameras with the same timestamp.
+#include <map>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/rig.h"
+#include "io/labels.h"
+#include "io/odometry_csv.h"
+#include "io/tum.h"
+#include "map/hd_map.h"
+
+namespace parkloc::io {
+
+std::string timestampStem(double timestamp);  // 12.35 -> "12.350000"
+
+class Sequence {
+ public:
+  // Reads calib.yaml and map.geojson (required, throws InputError), the optional files, and
+  // lists the images. Paths may be overridden (e.g. --calib / --map on the CLI).
+  explicit Sequence(const std::string& dir, const std::string& calib_path = "",
+                    const std::string& map_path = "", const std::string& odometry_path = "");
+
+  const std::string& dir() const { return dir_; }
+  const geometry::Rig& rig() const { return rig_; }
+  const map::HdMap& map() const { return map_; }
+  const std::vector<StampedPose>& groundTruth() const { return ground_truth_; }
+  const std::vector<OdometrySample>& odometry() const { return odometry_; }
+  const std::string& metaJson() const { return meta_json_; }  // raw text, "{}" when absent
+
+  // Frame-set timestamps, ascending (the union over cameras).
+  const std::vector<double>& timestamps() const { return timestamps_; }
+  // Cameras of the rig that have an image folder; warnings() says which are missing.
+  const std::vector<std::string>& cameras() const { return cameras_; }
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+  // Path of a frame's image; empty when that camera has no image at that time.
+  std::string imagePath(size_t frame, const std::string& camera) const;
+  // The decoded image; empty when missing or corrupt (the reason in *why when given).
+  cv::Mat loadImage(size_t frame, const std::string& camera, std::string* why = nullptr) const;
+  std::optional<ImageLabels> loadLabels(size_t frame, const std::string& camera) const;
+
+ private:
+  std::string dir_;
+  geometry::Rig rig_;
+  map::HdMap map_;
+  std::vector<StampedPose> ground_truth_;
+  std::vector<OdometrySample> odometry_;
+  std::string meta_json_ = "{}";
+  std::vector<double> timestamps_;
+  std::vector<std::string> cameras_;
+  std::vector<std::string> warnings_;
+  // camera -> (frame index -> image path)
+  std::map<std::string, std::map<size_t, std::string>> images_;
+};
+
+}  // namespace parkloc::io

@@ -1,0 +1,49 @@
+#pragma once
+// Text spotting: every text instance of a camera image with its polygon, content, class
+// and scores. Engines (PP-OCRv4 on ONNX Runtime, an oracle from labels, ...) implement
+// TextSpotter; nothing outside src/ocr knows which engine runs.
+#include <array>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "map/landmark.h"
+
+namespace parkloc::ocr {
+
+struct TextInstance {
+  // Image pixels, reading order: top-left, top-right, bottom-right, bottom-left of the
+  // text as it reads (so an upside-down number has its top-left at the bottom right).
+  std::array<cv::Point2f, 4> polygon;
+  std::string text;      // the lexicon entry when one matched, else the raw reading
+  std::string raw_text;  // greedy CTC reading
+  bool lexicon_match = false;
+  map::TextClass cls = map::TextClass::kOther;
+  float detection_score = 0.f;
+  float recognition_score = 0.f;  // calibrated probability of `text`
+  float class_score = 0.f;
+};
+
+// A region where the map predicts text (map-guided spotting): the predicted polygon in
+// the image and the texts expected there.
+struct RegionOfInterest {
+  std::array<cv::Point2f, 4> polygon;
+  std::vector<std::string> expected_texts;
+};
+
+struct SpotRequest {
+  // Texts to decode against (CTC forward score); empty means free reading only.
+  std::vector<std::string> lexicon;
+  // When non-empty, spot only inside these regions instead of the full frame.
+  std::vector<RegionOfInterest> regions;
+};
+
+class TextSpotter {
+ public:
+  virtual ~TextSpotter() = default;
+  virtual std::string name() const = 0;
+  // `image` is 8-bit BGR. Throws InputError for an empty or wrongly typed image.
+  virtual std::vector<TextInstance> spot(const cv::Mat& image, const SpotRequest& request) = 0;
+};
+
+}  // namespace parkloc::ocr

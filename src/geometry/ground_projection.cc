@@ -49,9 +49,10 @@ std::optional<Eigen::Vector2d> GroundHomography::groundFromUndistorted(
     const Eigen::Vector2d& pixel) const {
   const Eigen::Vector3d g = ground_from_undistorted * pixel.homogeneous();
   // The pixel's ray meets the ground in front of the camera only when the camera-frame
-  // depth of that ground point is positive: depth = (third row of [r1 r2 t]) . g / w.
-  const Eigen::Vector3d Rt_row = K_virtual.inverse().row(2) * undistorted_from_ground;
-  if (std::abs(g.z()) < 1e-12 || Rt_row.dot(g) / g.z() <= 0.0) return std::nullopt;
+  // depth of that ground point is positive. K's last row is (0, 0, 1), so the depth is
+  // H's last row applied to the ground point g / w.
+  if (std::abs(g.z()) < 1e-12 || undistorted_from_ground.row(2).dot(g) / g.z() <= 0.0)
+    return std::nullopt;
   return g.head<2>() / g.z();
 }
 

@@ -1,0 +1,234 @@
+#pragma once
+// The per-frame localization pipeline: text instances from the four cameras -> the
+// vehicle's pose in the garage, every frame.
+//
+//   spot (full frame, or map-guided regions)  ->  associate (exact matching, AFM box plot,
+//   Mahalanobis gating, reading-order check)  ->  measure (parkloc: SE(2) robust least
+//   squares on every polygon corner; paper: homography of the text centre + MCRP/MCAP
+//   averaging)  ->  filter (EKF with wheel odometry; dead reckoning when nothing is seen).
+//
+// The spotter is injected (ocr::TextSpotter), so this module knows nothing of ONNX. An
+// oracle source (ground-truth labels) passes instances in FrameInput instead of images.
+// Stable API (other modules code against it): changes here are additive only.
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "geometry/pose.h"
+#include "geometry/rig.h"
+#include "io/odometry_csv.h"
+#include "map/hd_map.h"
+#include "ocr/text_spotter.h"
+
+namespace parkloc::localize {
+
+// ---------------------------------------------------------------------------------------
+// Options
+
+// How the paper's pipeline (no yaw estimate of its own) gets the heading it needs to turn
+// vehicle-frame offsets into map offsets.
+enum class PaperHeadingSource {
+  // Direction of travel between successive position fixes (ground-truth free); before
+  // the first two fixes, and when standing still, the last heading is kept (initially 0,
+  // or PipelineOptions::initial_pose when given).
+  kMotionDirection,
+  // Integrated wheel-odometry yaw rate (needs odometry; not in the paper).
+  kOdometry,
+};
+
+struct PipelineOptions {
+  // Exactly the paper's pipeline (OCR-RTPS section 3): text centre -> ground homography,
+  // AFM box plot + exact matching, MCRP/MCAP averaging, no odometry, no EKF, full-frame
+  // spotting every frame. The switches below still turn AFM / MCRP / MCAP off.
+  bool paper_mode = false;
+
+  // Paper modules (each switchable for the ablation, paper table "AFM / MCRP / MCAP").
+  bool afm = true;   // box-plot anomaly filter on parking numbers (section 3.3)
+  bool mcrp = true;  // average one landmark's relative position over cameras (section 3.5)
+  bool mcap = true;  // use every landmark, not only the first (section 3.5)
+  int afm_queue_length = 30;
+  double afm_iqr_factor = 1.5;
+  PaperHeadingSource paper_heading = PaperHeadingSource::kMotionDirection;
+  // Paper mode text centre: true = mean of the four polygon corners, false = centre of the
+  // axis-aligned bounding box (the paper's "box").
+  bool paper_centre_from_polygon = true;
+
+  // Beyond the paper.
+  bool use_odometry = true;  // EKF prediction from wheel odometry (else constant pose)
+  bool map_guided = true;    // spot only where the map predicts text while tracking
+  // Full-frame spotting every N frames while tracking (and every frame when lost or not
+  // initialised). 1 = always full frame.
+  int full_frame_interval = 10;
+  // Class filter: which text classes may be associated with the map.
+  bool use_parking_numbers = true;
+  bool use_pillar_text = true;
+  std::string level;  // map level to use ("" = all levels)
+
+  // Measurement model (parkloc solver).
+  double pixel_sigma = 1.5;         // corner noise, pixels (scales the covariance)
+  double huber_threshold_px = 3.0;  // Huber IRLS threshold on reprojection residuals
+  int solver_max_iterations = 20;
+  double min_recognition_score = 0.0;  // instances below are ignored
+
+  // Association gating against the predicted pose (chi-square, 2 dof on the landmark
+  // centre). Only applied when the filter is tracking.
+  double gate_chi2 = 13.8;         // 99.9 % for 2 dof
+  double gate_min_radius_m = 0.5;  // never gate tighter than this
+
+  // EKF process noise (per second of motion) and odometry noise.
+  double odo_speed_sigma = 0.05;       // m/s
+  double odo_yaw_rate_sigma = 0.01;    // rad/s
+  double no_odometry_pos_sigma = 0.5;  // m/sqrt(s), random walk when no odometry
+  double no_odometry_yaw_sigma = 0.1;  // rad/sqrt(s)
+
+  // Tracking state.
+  double lost_position_sigma_m = 2.0;   // 1-sigma position beyond which the filter is lost
+  int reinit_after_rejected_fixes = 3;  // consecutive solver fixes outside the gate -> re-init
+
+  // Map-guided regions.
+  double roi_radius_m = 12.0;    // map landmarks within this radius of the prediction
+  double roi_margin_px = 12.0;   // grown by the pose uncertainty, plus this margin
+  double roi_min_size_px = 8.0;  // projected text smaller than this is skipped
+
+  // Optional known starting pose (e.g. from a previous session); otherwise the first
+  // solver fix initialises.
+  std::optional<geometry::Pose2> initial_pose;
+
+  // The paper's pipeline with the given module switches.
+  static PipelineOptions paper();
+};
+
+// ---------------------------------------------------------------------------------------
+// Input
+
+struct CameraInput {
+  std::string camera;  // rig camera name
+  // 8-bit BGR; empty when the image is missing or corrupt (the pipeline goes on with the
+  // other cameras and reports it in FrameResult::warnings).
+  cv::Mat image;
+  // When set, these instances are used as they are and no spotting runs (oracle OCR from
+  // ground-truth labels, or instances spotted elsewhere).
+  std::optional<std::vector<ocr::TextInstance>> instances;
+};
+
+struct FrameInput {
+  double timestamp = 0.0;
+  std::vector<CameraInput> cameras;
+  // Wheel odometry samples with timestamp in (previous frame, this frame]; the pipeline
+  // integrates them up to `timestamp`. Non-finite samples are skipped with a warning.
+  std::vector<io::OdometrySample> odometry;
+};
+
+// ---------------------------------------------------------------------------------------
+// Output
+
+enum class TrackingStatus {
+  kNotInitialised,  // no fix yet: no pose
+  kOk,              // a measurement update this frame
+  kDeadReckoning,   // no measurement this frame; prediction only
+  kLost,            // uncertainty beyond lost_position_sigma_m, or re-localising
+};
+std::string toString(TrackingStatus status);
+
+// Why an instance was or was not used.
+enum class AssociationVerdict {
+  kAccepted,
+  kWrongClass,     // not a class used for localization
+  kLowScore,       // recognition score below min_recognition_score
+  kNotInMap,       // exact matching failed (paper section 3.3)
+  kAnomaly,        // AFM box-plot outlier (paper section 3.3)
+  kGated,          // in the map but far from where the predicted pose puts it
+  kFlipped,        // reading order disagrees with the map heading (180-degree reading)
+  kSolverOutlier,  // down-weighted to (near) zero by the robust solver
+  kNoGeometry,     // polygon cannot be cast onto the ground / face (horizon, behind)
+};
+std::string toString(AssociationVerdict verdict);
+
+struct Association {
+  std::string camera;
+  int instance_index = -1;  // index into FrameResult::cameras[...].instances
+  std::string text;
+  std::string landmark_id;  // empty when no landmark matched
+  AssociationVerdict verdict = AssociationVerdict::kNotInMap;
+  // Squared Mahalanobis distance of the landmark centre against the prediction (-1 when
+  // not gated, e.g. not initialised).
+  double mahalanobis2 = -1.0;
+  // Mean reprojection residual of the corners after the solve, pixels (-1 when unused).
+  double residual_px = -1.0;
+};
+
+struct CameraResult {
+  std::string camera;
+  bool image_ok = true;    // false: missing or corrupt, skipped
+  bool full_frame = true;  // spotted on the full frame (else map-guided regions)
+  int regions = 0;         // map-guided regions requested
+  std::vector<ocr::TextInstance> instances;
+};
+
+// Wall-clock time of each stage for this frame, milliseconds.
+struct StageTimings {
+  double roi_ms = 0.0;          // map-guided region prediction
+  double spotting_ms = 0.0;     // OCR, all cameras
+  double association_ms = 0.0;  // exact matching, AFM, gating
+  double solver_ms = 0.0;       // SE(2) solve or paper projection + averaging
+  double filter_ms = 0.0;       // EKF predict + update
+  double total_ms = 0.0;
+};
+
+struct FrameResult {
+  double timestamp = 0.0;
+  TrackingStatus status = TrackingStatus::kNotInitialised;
+  bool has_pose = false;  // false only before the first fix
+  geometry::Pose2 pose;   // map_from_vehicle
+  // Covariance of (x, y, yaw), m^2 / rad^2. In paper mode the yaw entries are large (the
+  // paper estimates no heading).
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  // The single-frame solver fix, before the filter, when there was one.
+  std::optional<geometry::Pose2> measurement;
+  std::optional<Eigen::Matrix3d> measurement_covariance;
+  bool solver_converged = false;
+  int solver_iterations = 0;
+  bool reinitialised = false;  // the filter was reset from the solver this frame
+
+  std::vector<CameraResult> cameras;
+  std::vector<Association> associations;
+  StageTimings timings;
+  std::vector<std::string> warnings;
+};
+
+// ---------------------------------------------------------------------------------------
+
+class Pipeline {
+ public:
+  // `spotter` may be null when every frame brings its instances (oracle); a frame that
+  // needs spotting without a spotter gets a warning and no instances. The rig and map
+  // are copied; the spotter must outlive the pipeline.
+  Pipeline(geometry::Rig rig, map::HdMap map, PipelineOptions options = {},
+           ocr::TextSpotter* spotter = nullptr);
+  ~Pipeline();
+  Pipeline(Pipeline&&) noexcept;
+  Pipeline& operator=(Pipeline&&) noexcept;
+  Pipeline(const Pipeline&) = delete;
+  Pipeline& operator=(const Pipeline&) = delete;
+
+  // Processes one frame set. Frames must come in increasing time; a frame not after the
+  // previous one is processed without prediction and reported in warnings.
+  FrameResult process(const FrameInput& frame);
+
+  // Forgets the track and the AFM queue (a new drive).
+  void reset();
+
+  const PipelineOptions& options() const;
+  const geometry::Rig& rig() const;
+  const map::HdMap& map() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace parkloc::localize

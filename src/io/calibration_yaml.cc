@@ -1,0 +1,222 @@
+#include "io/calibration_yaml.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <set>
+
+#include "common/error.h"
+
+namespace parkloc::io {
+namespace {
+
+// Tolerance for R^T R = I in T_vehicle_camera: loose enough for matrices written with
+// fewer digits by other tools, tight enough to catch a scaled or sheared rotation.
+constexpr double kOrthonormalTolerance = 1e-6;
+
+class CalibReader {
+ public:
+  explicit CalibReader(std::string path) : path_(std::move(path)) {}
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(fmt::format("calib {}: {}", path_, what));
+  }
+  [[noreturn]] void fail(const std::string& camera, const std::string& field,
+                         const std::string& what) const {
+    throw InputError(
+        fmt::format("calib {}: camera '{}': field '{}': {}", path_, camera, field, what));
+  }
+
+  void require(const cv::FileNode& parent, const std::string& camera, const std::string& field,
+               cv::FileNode& out) const {
+    out = parent[field];
+    if (out.empty() || out.isNone()) fail(camera, field, "missing");
+  }
+
+  double readNumber(const cv::FileNode& parent, const std::string& camera,
+                    const std::string& field) const {
+    cv::FileNode node;
+    require(parent, camera, field, node);
+    if (!node.isReal() && !node.isInt()) fail(camera, field, "expected a number");
+    const double value = node.real();
+    if (!std::isfinite(value)) fail(camera, field, fmt::format("non-finite value {}", value));
+    return value;
+  }
+
+  int readPositiveInt(const cv::FileNode& parent, const std::string& camera,
+                      const std::string& field) const {
+    cv::FileNode node;
+    require(parent, camera, field, node);
+    if (!node.isInt()) fail(camera, field, "expected an integer");
+    const int value = static_cast<int>(node);
+    if (value <= 0) fail(camera, field, fmt::format("must be positive, got {}", value));
+    return value;
+  }
+
+  cv::Mat readMatrix(const cv::FileNode& parent, const std::string& camera,
+                     const std::string& field, int rows, int cols) const {
+    cv::FileNode node;
+    require(parent, camera, field, node);
+    if (!node.isMap() || node["rows"].empty() || node["cols"].empty() || node["data"].empty())
+      fail(camera, field, fmt::format("expected a {}x{} opencv-matrix", rows, cols));
+    cv::Mat m;
+    try {
+      node >> m;
+    } catch (const cv::Exception& e) {
+      fail(camera, field, fmt::format("unreadable matrix ({})", e.err));
+    }
+    if (m.rows != rows || m.cols != cols || m.channels() != 1)
+      fail(camera, field,
+           fmt::format("expected a {}x{} matrix, got {}x{}", rows, cols, m.rows, m.cols));
+    m.convertTo(m, CV_64F);
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < cols; ++c)
+        if (!std::isfinite(m.at<double>(r, c)))
+          fail(camera, field,
+               fmt::format("non-finite value {} at ({}, {})", m.at<double>(r, c), r, c));
+    return m;
+  }
+
+  geometry::RigCamera readCamera(const cv::FileNode& node, size_t index) const {
+    geometry::RigCamera camera;
+    if (!node.isMap()) fail(fmt::format("camera #{}: expected a map", index));
+    const cv::FileNode name = node["name"];
+    if (name.empty() || !name.isString())
+      fail(fmt::format("camera #{}: field 'name': missing or not a string", index));
+    camera.name = static_cast<std::string>(name);
+    const std::string& who = camera.name;
+
+    cv::FileNode model_node;
+    require(node, who, "model", model_node);
+    if (!model_node.isString()) fail(who, "model", "expected a string");
+    const std::string model_name = static_cast<std::string>(model_node);
+    const auto type = geometry::cameraModelTypeFromString(model_name);
+    if (!type)
+      fail(who, "model", fmt::format("unknown model '{}' (fisheye or pinhole)", model_name));
+
+    geometry::CameraModel& m = camera.model;
+    m.type = *type;
+    m.width = readPositiveInt(node, who, "image_width");
+    m.height = readPositiveInt(node, who, "image_height");
+
+    const cv::Mat K = readMatrix(node, who, "K", 3, 3);
+    m.fx = K.at<double>(0, 0);
+    m.fy = K.at<double>(1, 1);
+    m.cx = K.at<double>(0, 2);
+    m.cy = K.at<double>(1, 2);
+    if (m.fx <= 0.0 || m.fy <= 0.0)
+      fail(who, "K", fmt::format("focal length must be positive, got fx={} fy={}", m.fx, m.fy));
+
+    const cv::Mat D = readMatrix(node, who, "D", 4, 1);
+    for (int i = 0; i < 4; ++i) m.distortion[i] = D.at<double>(i, 0);
+
+    if (!node["max_theta"].empty()) {
+      m.max_theta = readNumber(node, who, "max_theta");
+      if (m.max_theta <= 0.0)
+        fail(who, "max_theta", fmt::format("must be positive, got {}", m.max_theta));
+    }
+
+    const cv::Mat T = readMatrix(node, who, "T_vehicle_camera", 4, 4);
+    Eigen::Matrix4d E;
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) E(r, c) = T.at<double>(r, c);
+    if ((E.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).norm() > 1e-9)
+      fail(who, "T_vehicle_camera", "last row must be [0, 0, 0, 1]");
+    const Eigen::Matrix3d R = E.topLeftCorner<3, 3>();
+    const double orth_error = (R.transpose() * R - Eigen::Matrix3d::Identity()).norm();
+    if (orth_error > kOrthonormalTolerance || R.determinant() < 0.0)
+      fail(who, "T_vehicle_camera",
+           fmt::format("rotation part is not orthonormal (|R^T R - I| = {:.3g}, det = {:.6g})",
+                       orth_error, R.determinant()));
+    camera.vehicle_from_camera.linear() = R;
+    camera.vehicle_from_camera.translation() = E.topRightCorner<3, 1>();
+    return camera;
+  }
+
+  geometry::Rig read() const {
+    if (!std::filesystem::is_regular_file(path_)) fail("file not found");
+    cv::FileStorage fs;
+    try {
+      if (!fs.open(path_, cv::FileStorage::READ | cv::FileStorage::FORMAT_YAML))
+        fail("cannot open or parse the file");
+    } catch (const cv::Exception& e) {
+      fail(fmt::format("cannot parse YAML ({})", e.err));
+    }
+    geometry::Rig rig;
+    const cv::FileNode cameras = fs["cameras"];
+    if (cameras.empty() || !cameras.isSeq()) fail("field 'cameras': missing or not a sequence");
+    if (cameras.size() == 0) fail("field 'cameras': no cameras");
+    std::set<std::string> names;
+    size_t index = 0;
+    for (const auto& node : cameras) {
+      geometry::RigCamera camera = readCamera(node, index++);
+      if (!names.insert(camera.name).second) fail(camera.name, "name", "duplicate camera name");
+      rig.cameras.push_back(std::move(camera));
+    }
+    return rig;
+  }
+
+ private:
+  std::string path_;
+};
+
+cv::Mat toCv(const Eigen::MatrixXd& e) {
+  cv::Mat m(static_cast<int>(e.rows()), static_cast<int>(e.cols()), CV_64F);
+  for (int r = 0; r < m.rows; ++r)
+    for (int c = 0; c < m.cols; ++c) m.at<double>(r, c) = e(r, c);
+  return m;
+}
+
+}  // namespace
+
+geometry::Rig loadCalibration(const std::string& path) {
+  try {
+    return CalibReader(path).read();
+  } catch (const InputError&) {
+    throw;
+  } catch (const cv::Exception& e) {
+    // FileStorage may throw from deep inside on malformed content.
+    throw InputError(fmt::format("calib {}: cannot parse YAML ({})", path, e.err));
+  } catch (const std::exception& e) {
+    // OpenCV 4.6's YAML parser can even throw std::length_error on garbage.
+    throw InputError(fmt::format("calib {}: cannot parse YAML ({})", path, e.what()));
+  }
+}
+
+void saveCalibration(const geometry::Rig& rig, const std::string& path) {
+  cv::FileStorage fs;
+  try {
+    fs.open(path, cv::FileStorage::WRITE | cv::FileStorage::FORMAT_YAML);
+  } catch (const cv::Exception& e) {
+    throw IoError(fmt::format("calib {}: cannot write ({})", path, e.err));
+  }
+  if (!fs.isOpened()) throw IoError(fmt::format("calib {}: cannot open for writing", path));
+  fs << "rig_name" << std::filesystem::path(path).stem().string();
+  fs << "cameras"
+     << "[";
+  for (const auto& camera : rig.cameras) {
+    const geometry::CameraModel& m = camera.model;
+    Eigen::Matrix3d K = Eigen::Matrix3d::Identity();
+    K(0, 0) = m.fx;
+    K(1, 1) = m.fy;
+    K(0, 2) = m.cx;
+    K(1, 2) = m.cy;
+    const Eigen::Vector4d D(m.distortion[0], m.distortion[1], m.distortion[2], m.distortion[3]);
+    fs << "{";
+    fs << "name" << camera.name;
+    fs << "model" << geometry::toString(m.type);
+    fs << "image_width" << m.width;
+    fs << "image_height" << m.height;
+    fs << "K" << toCv(K);
+    fs << "D" << toCv(D);
+    if (m.type == geometry::CameraModelType::kFisheye) fs << "max_theta" << m.max_theta;
+    fs << "T_vehicle_camera" << toCv(camera.vehicle_from_camera.matrix());
+    fs << "}";
+  }
+  fs << "]";
+  fs.release();
+}
+
+}  // namespace parkloc::io

@@ -1,0 +1,140 @@
+#include "io/labels.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "common/error.h"
+
+namespace parkloc::io {
+namespace {
+
+using nlohmann::json;
+
+// ICDAR-2015 marks text that a detector may miss without penalty as "###".
+constexpr double kIgnoreOccludedFraction = 0.5;
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw InputError(fmt::format("labels {}: {}", path, what));
+}
+
+const json& field(const json& obj, const char* key, const std::string& path,
+                  const std::string& where) {
+  const auto it = obj.find(key);
+  if (it == obj.end()) fail(path, fmt::format("{}missing field '{}'", where, key));
+  return *it;
+}
+
+double number(const json& obj, const char* key, const std::string& path, const std::string& where) {
+  const json& v = field(obj, key, path, where);
+  if (!v.is_number())
+    fail(path, fmt::format("{}field '{}': expected a number, got {}", where, key, v.type_name()));
+  return v.get<double>();
+}
+
+std::string string(const json& obj, const char* key, const std::string& path,
+                   const std::string& where) {
+  const json& v = field(obj, key, path, where);
+  if (!v.is_string())
+    fail(path, fmt::format("{}field '{}': expected a string, got {}", where, key, v.type_name()));
+  return v.get<std::string>();
+}
+
+LabelInstance readInstance(const json& j, const std::string& path, size_t index) {
+  const std::string where = fmt::format("instance #{}: ", index);
+  if (!j.is_object()) fail(path, where + "expected an object");
+  LabelInstance inst;
+  const json& polygon = field(j, "polygon", path, where);
+  if (!polygon.is_array() || polygon.size() != 4)
+    fail(path, where + "field 'polygon': expected 4 [x, y] points");
+  for (size_t k = 0; k < 4; ++k) {
+    const json& p = polygon[k];
+    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+      fail(path, fmt::format("{}field 'polygon': point {} is not [x, y]", where, k));
+    inst.polygon[k] = {p[0].get<double>(), p[1].get<double>()};
+    if (!inst.polygon[k].allFinite())
+      fail(path, fmt::format("{}field 'polygon': point {} is not finite", where, k));
+  }
+  inst.text = string(j, "text", path, where);
+  const std::string cls = string(j, "class", path, where);
+  const auto parsed = map::textClassFromString(cls);
+  if (!parsed) fail(path, fmt::format("{}field 'class': unknown class '{}'", where, cls));
+  inst.cls = *parsed;
+  if (j.contains("occluded_fraction"))
+    inst.occluded_fraction = number(j, "occluded_fraction", path, where);
+  if (j.contains("truncated")) {
+    if (!j["truncated"].is_boolean()) fail(path, where + "field 'truncated': expected a boolean");
+    inst.truncated = j["truncated"].get<bool>();
+  }
+  if (j.contains("landmark_id")) inst.landmark_id = string(j, "landmark_id", path, where);
+  if (j.contains("rotation_deg")) inst.rotation_deg = number(j, "rotation_deg", path, where);
+  return inst;
+}
+
+}  // namespace
+
+ImageLabels loadLabels(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(fmt::format("labels {}: cannot open file", path));
+  std::ostringstream text;
+  text << in.rdbuf();
+  json doc;
+  try {
+    doc = json::parse(text.str());
+  } catch (const json::parse_error& e) {
+    fail(path, fmt::format("malformed JSON at byte {}", e.byte));
+  }
+  if (!doc.is_object()) fail(path, "expected a JSON object");
+  ImageLabels labels;
+  labels.camera = string(doc, "camera", path, "");
+  labels.timestamp = number(doc, "timestamp", path, "");
+  labels.width = static_cast<int>(number(doc, "width", path, ""));
+  labels.height = static_cast<int>(number(doc, "height", path, ""));
+  const json& instances = field(doc, "instances", path, "");
+  if (!instances.is_array()) fail(path, "field 'instances': expected an array");
+  for (size_t i = 0; i < instances.size(); ++i)
+    labels.instances.push_back(readInstance(instances[i], path, i));
+  return labels;
+}
+
+void saveLabels(const ImageLabels& labels, const std::string& path) {
+  json instances = json::array();
+  for (const LabelInstance& inst : labels.instances) {
+    json polygon = json::array();
+    for (const auto& p : inst.polygon) polygon.push_back({p.x(), p.y()});
+    instances.push_back({{"polygon", std::move(polygon)},
+                         {"text", inst.text},
+                         {"class_id", static_cast<int>(inst.cls)},
+                         {"class", map::toString(inst.cls)},
+                         {"occluded_fraction", inst.occluded_fraction},
+                         {"truncated", inst.truncated},
+                         {"landmark_id", inst.landmark_id},
+                         {"rotation_deg", inst.rotation_deg}});
+  }
+  const json doc = {{"camera", labels.camera},
+                    {"timestamp", labels.timestamp},
+                    {"width", labels.width},
+                    {"height", labels.height},
+                    {"instances", std::move(instances)}};
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw IoError(fmt::format("labels {}: cannot open for writing", path));
+  out << doc.dump(1) << "\n";
+  if (!out) throw IoError(fmt::format("labels {}: write failed", path));
+}
+
+void saveIcdarLabels(const ImageLabels& labels, const std::string& path) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw IoError(fmt::format("labels {}: cannot open for writing", path));
+  for (const LabelInstance& inst : labels.instances) {
+    for (const auto& p : inst.polygon)
+      out << std::lround(p.x()) << ',' << std::lround(p.y()) << ',';
+    out << (inst.occluded_fraction >= kIgnoreOccludedFraction ? std::string("###") : inst.text)
+        << "\n";
+  }
+  if (!out) throw IoError(fmt::format("labels {}: write failed", path));
+}
+
+}  // namespace parkloc::io

@@ -1,0 +1,30 @@
+#pragma once
+// Condition subsets of the paper's Table 8: bright light, weak light and blur are properties
+// of a whole sequence (its meta.json), text rotation of about 45, 90 or 180 degrees is a
+// property of each labelled instance.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace parkloc::eval {
+
+// Subset names, in the order the paper's Table 8 lists them.
+inline const std::vector<std::string>& conditionNames() {
+  static const std::vector<std::string> names = {"bright", "weak_light", "blur",
+                                                 "rot45",  "rot90",      "rot180"};
+  return names;
+}
+std::string conditionTitle(const std::string& name);  // "weak_light" -> "Weak light"
+
+// Sequence-level conditions from the text of meta.json: its "condition" (or "conditions")
+// entry as a string ("weak_light", "bright+blur"), a list of strings, or an object such as
+// {"light": "weak", "blur": true}. Names are normalised (weak / dim / dark -> weak_light,
+// fuzzy / motion_blur -> blur). Throws InputError for malformed JSON.
+std::vector<std::string> sequenceConditions(const std::string& meta_json,
+                                            const std::string& source_name = "meta.json");
+
+// The rotation subset of a text whose reading direction is at `rotation_deg` in the image:
+// within 22.5 degrees of 45, 90 or 180 (either sign), else none.
+std::optional<std::string> rotationSubset(double rotation_deg);
+
+}  // namespace parkloc::eval

@@ -1,0 +1,27 @@
+#pragma once
+// Latency statistics per pipeline stage and for the whole frame set, in milliseconds.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "eval/statistics.h"
+
+namespace parkloc::eval {
+
+// One frame set's timings: milliseconds per named stage (e.g. "detect", "recognize",
+// "localize") and the total wall time of the frame set.
+struct FrameTiming {
+  double total_ms = 0.0;
+  std::map<std::string, double> stage_ms;
+};
+
+struct LatencyReport {
+  Summary total_ms;
+  // A stage missing from a frame counts as 0 ms there (it did not run).
+  std::map<std::string, Summary> stage_ms;
+  std::map<std::string, std::vector<double>> samples_ms;  // for histograms; "total" included
+};
+
+LatencyReport latencyReport(const std::vector<FrameTiming>& frames);
+
+}  // namespace parkloc::eval

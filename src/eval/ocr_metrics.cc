@@ -1,0 +1,100 @@
+#include "eval/ocr_metrics.h"
+
+#include <cmath>
+
+#include "eval/conditions.h"
+
+namespace parkloc::eval {
+namespace {
+
+Quad toQuad(const std::array<Eigen::Vector2d, 4>& polygon) {
+  Quad q;
+  for (size_t i = 0; i < 4; ++i) {
+    q[i] = cv::Point2f(static_cast<float>(polygon[i].x()), static_cast<float>(polygon[i].y()));
+  }
+  return q;
+}
+
+}  // namespace
+
+double OcrCounts::fMeasure() const {
+  const double p = precision(), r = recall();
+  return p + r > 0.0 ? 2.0 * p * r / (p + r) : 0.0;
+}
+
+OcrCounts& OcrCounts::operator+=(const OcrCounts& o) {
+  truths += o.truths;
+  detections += o.detections;
+  tp += o.tp;
+  fp += o.fp;
+  fn += o.fn;
+  iou_sum += o.iou_sum;
+  recognized_raw += o.recognized_raw;
+  recognized += o.recognized;
+  classified += o.classified;
+  return *this;
+}
+
+double readingAngleDeg(const Quad& polygon) {
+  // Mid-point of the left edge to mid-point of the right edge: the reading direction.
+  const cv::Point2d left = 0.5 * (cv::Point2d(polygon[0]) + cv::Point2d(polygon[3]));
+  const cv::Point2d right = 0.5 * (cv::Point2d(polygon[1]) + cv::Point2d(polygon[2]));
+  return std::atan2(right.y - left.y, right.x - left.x) * 180.0 / M_PI;
+}
+
+void OcrEvaluator::add(const io::ImageLabels& truth,
+                       const std::vector<ocr::TextInstance>& detections,
+                       const std::vector<std::string>& image_conditions, double spotting_seconds) {
+  std::vector<Quad> truth_quads, detection_quads;
+  std::vector<bool> dont_care;
+  for (const io::LabelInstance& instance : truth.instances) {
+    truth_quads.push_back(toQuad(instance.polygon));
+    dont_care.push_back(instance.occluded_fraction >= options_.dont_care_occlusion);
+  }
+  for (const ocr::TextInstance& d : detections) detection_quads.push_back(d.polygon);
+  const ImageMatching matching =
+      matchDetections(truth_quads, dont_care, detection_quads, options_.matching);
+
+  // Every count goes to the overall tally, its class and each subset it belongs to.
+  auto buckets = [&](map::TextClass cls, const Quad& polygon, const double* rotation_deg) {
+    std::vector<OcrCounts*> out = {&result_.overall, &result_.by_class[map::toString(cls)]};
+    for (const std::string& c : image_conditions) out.push_back(&result_.by_condition[c]);
+    const double angle = rotation_deg ? *rotation_deg : readingAngleDeg(polygon);
+    if (const auto rot = rotationSubset(angle)) out.push_back(&result_.by_condition[*rot]);
+    return out;
+  };
+
+  for (size_t t = 0; t < truth.instances.size(); ++t) {
+    if (dont_care[t]) continue;
+    const io::LabelInstance& gt = truth.instances[t];
+    for (OcrCounts* c : buckets(gt.cls, truth_quads[t], &gt.rotation_deg)) ++c->truths;
+  }
+  for (const MatchedPair& m : matching.matches) {
+    const io::LabelInstance& gt = truth.instances[m.truth];
+    const ocr::TextInstance& d = detections[m.detection];
+    const std::string& raw = d.raw_text.empty() ? d.text : d.raw_text;
+    for (OcrCounts* c : buckets(gt.cls, truth_quads[m.truth], &gt.rotation_deg)) {
+      ++c->detections;
+      ++c->tp;
+      c->iou_sum += m.iou;
+      c->recognized_raw += raw == gt.text;
+      c->recognized += d.text == gt.text;
+      c->classified += d.cls == gt.cls;
+    }
+  }
+  for (size_t t : matching.missed_truths) {
+    const io::LabelInstance& gt = truth.instances[t];
+    for (OcrCounts* c : buckets(gt.cls, truth_quads[t], &gt.rotation_deg)) ++c->fn;
+  }
+  // A false detection has no truth: its predicted class and its own reading angle place it.
+  for (size_t d : matching.false_detections) {
+    for (OcrCounts* c : buckets(detections[d].cls, detection_quads[d], nullptr)) {
+      ++c->detections;
+      ++c->fp;
+    }
+  }
+  ++result_.images;
+  result_.spotting_seconds += spotting_seconds;
+}
+
+}  // namespace parkloc::eval

@@ -1,0 +1,82 @@
+#pragma once
+// Text spotting metrics of the paper's Table 3, accumulated image by image: detection
+// TP / FP / FN (ICDAR-2015 matching at IoU 0.5), mean IoU of the matches, recognition
+// accuracy (exact string, raw CTC reading and after lexicon decoding) and classification
+// accuracy over the matched instances; overall, per text class and per condition subset.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "eval/text_matching.h"
+#include "io/labels.h"
+#include "ocr/text_spotter.h"
+
+namespace parkloc::eval {
+
+struct OcrCounts {
+  size_t truths = 0;      // cared-for ground-truth instances
+  size_t detections = 0;  // detections not ignored on don't-care regions
+  size_t tp = 0, fp = 0, fn = 0;
+  double iou_sum = 0.0;                                       // over the TP matches
+  size_t recognized_raw = 0, recognized = 0, classified = 0;  // among the TP matches
+
+  // Rates as Table 3 reads them: TP and FN per ground-truth instance, FP per detection.
+  double tpRate() const { return ratio(tp, truths); }
+  double fnRate() const { return ratio(fn, truths); }
+  double fpRate() const { return ratio(fp, detections); }
+  double precision() const { return ratio(tp, tp + fp); }
+  double recall() const { return ratio(tp, tp + fn); }
+  double fMeasure() const;
+  double meanIoU() const { return tp ? iou_sum / static_cast<double>(tp) : 0.0; }
+  double recognitionRawAccuracy() const { return ratio(recognized_raw, tp); }
+  double recognitionAccuracy() const { return ratio(recognized, tp); }
+  double classificationAccuracy() const { return ratio(classified, tp); }
+  // Share of all cared-for instances both found and read correctly (end to end).
+  double endToEndAccuracy() const { return ratio(recognized, truths); }
+
+  OcrCounts& operator+=(const OcrCounts& other);
+
+ private:
+  static double ratio(size_t a, size_t b) {
+    return b ? static_cast<double>(a) / static_cast<double>(b) : 0.0;
+  }
+};
+
+struct OcrEvaluation {
+  OcrCounts overall;
+  std::map<std::string, OcrCounts> by_class;      // "parking_number", "pillar", "other"
+  std::map<std::string, OcrCounts> by_condition;  // names of conditionNames()
+  size_t images = 0;
+  double spotting_seconds = 0.0;  // time spent in the engine, for images per second
+  double imagesPerSecond() const {
+    return spotting_seconds > 0.0 ? static_cast<double>(images) / spotting_seconds : 0.0;
+  }
+};
+
+struct OcrEvaluationOptions {
+  MatchingOptions matching;
+  // Instances at least this much occluded are "don't care" (the targets count instances
+  // less than half occluded).
+  double dont_care_occlusion = 0.5;
+};
+
+// Reading direction of a polygon in the image, degrees in (-180, 180] (0 = left to right),
+// the same convention as io::LabelInstance::rotation_deg.
+double readingAngleDeg(const Quad& polygon);
+
+class OcrEvaluator {
+ public:
+  explicit OcrEvaluator(OcrEvaluationOptions options = {}) : options_(options) {}
+
+  // One image: its labels, what the engine found, the sequence's conditions (bright,
+  // weak_light, blur) and the seconds the engine took.
+  void add(const io::ImageLabels& truth, const std::vector<ocr::TextInstance>& detections,
+           const std::vector<std::string>& image_conditions, double spotting_seconds = 0.0);
+  const OcrEvaluation& result() const { return result_; }
+
+ private:
+  OcrEvaluationOptions options_;
+  OcrEvaluation result_;
+};
+
+}  // namespace parkloc::eval

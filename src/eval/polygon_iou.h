@@ -1,0 +1,20 @@
+#pragma once
+// Intersection over union of two text polygons, the overlap measure of ICDAR-2015 detection
+// evaluation. Polygons are in pixels; a quadrilateral that is not convex (a bad detection)
+// is replaced by its convex hull.
+#include <array>
+#include <opencv2/core.hpp>
+#include <vector>
+
+namespace parkloc::eval {
+
+using Quad = std::array<cv::Point2f, 4>;
+
+double polygonArea(const std::vector<cv::Point2f>& polygon);
+// Area of the intersection of the convex hulls of `a` and `b`.
+double intersectionArea(const std::vector<cv::Point2f>& a, const std::vector<cv::Point2f>& b);
+// 0 when both are degenerate (no area).
+double polygonIoU(const std::vector<cv::Point2f>& a, const std::vector<cv::Point2f>& b);
+double polygonIoU(const Quad& a, const Quad& b);
+
+}  // namespace parkloc::eval

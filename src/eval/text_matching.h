@@ -1,0 +1,39 @@
+#pragma once
+// ICDAR-2015 style detection matching: one-to-one pairs of ground-truth and detected text
+// polygons at IoU >= 0.5, with "don't care" ground truth that neither counts as missed nor
+// turns a detection on it into a false positive.
+#include <optional>
+#include <vector>
+
+#include "eval/polygon_iou.h"
+
+namespace parkloc::eval {
+
+struct MatchingOptions {
+  double min_iou = 0.5;
+  // A detection that covers a don't-care instance with more than this share of its own area
+  // is ignored (the ICDAR-2015 rule for '###' regions).
+  double dont_care_min_coverage = 0.5;
+};
+
+struct MatchedPair {
+  size_t truth = 0;
+  size_t detection = 0;
+  double iou = 0.0;
+};
+
+struct ImageMatching {
+  std::vector<MatchedPair> matches;
+  std::vector<size_t> missed_truths;       // cared-for ground truth without a match (FN)
+  std::vector<size_t> false_detections;    // detections without a match (FP)
+  std::vector<size_t> ignored_detections;  // unmatched detections on don't-care regions
+};
+
+// `dont_care[i]` marks truth i as ignored (e.g. at least half occluded). Pairs are taken
+// greedily by decreasing IoU, so each truth and each detection is used at most once; matching
+// against cared-for truth comes first, so a good detection next to an ignored region counts.
+ImageMatching matchDetections(const std::vector<Quad>& truths, const std::vector<bool>& dont_care,
+                              const std::vector<Quad>& detections,
+                              const MatchingOptions& options = {});
+
+}  // namespace parkloc::eval

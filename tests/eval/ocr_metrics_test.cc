@@ -1,0 +1,103 @@
+#include "eval/ocr_metrics.h"
+
+#include <gtest/gtest.h>
+
+namespace parkloc::eval {
+namespace {
+
+io::LabelInstance label(double x0, double y0, double x1, double y1, const std::string& text,
+                        map::TextClass cls, double occluded = 0.0, double rotation_deg = 0.0) {
+  io::LabelInstance l;
+  l.polygon = {Eigen::Vector2d(x0, y0), Eigen::Vector2d(x1, y0), Eigen::Vector2d(x1, y1),
+               Eigen::Vector2d(x0, y1)};
+  l.text = text;
+  l.cls = cls;
+  l.occluded_fraction = occluded;
+  l.rotation_deg = rotation_deg;
+  return l;
+}
+
+ocr::TextInstance detection(float x0, float y0, float x1, float y1, const std::string& text,
+                            const std::string& raw, map::TextClass cls) {
+  ocr::TextInstance d;
+  d.polygon = {cv::Point2f(x0, y0), cv::Point2f(x1, y0), cv::Point2f(x1, y1), cv::Point2f(x0, y1)};
+  d.text = text;
+  d.raw_text = raw;
+  d.cls = cls;
+  return d;
+}
+
+using map::TextClass;
+
+TEST(OcrMetrics, CountsOfOneHandMadeImage) {
+  io::ImageLabels truth;
+  truth.instances = {
+      label(0, 0, 100, 40, "B2-117", TextClass::kParkingNumber),         // read right
+      label(200, 0, 300, 40, "B2-118", TextClass::kParkingNumber),       // raw wrong
+      label(400, 0, 440, 100, "B2", TextClass::kPillar, 0.0, 90.0),      // missed
+      label(600, 0, 700, 40, "B2-120", TextClass::kParkingNumber, 0.7),  // don't care
+  };
+  const std::vector<ocr::TextInstance> detections = {
+      detection(0, 0, 100, 40, "B2-117", "B2-117", TextClass::kParkingNumber),
+      detection(200, 0, 290, 40, "B2-118", "B2-11B", TextClass::kOther),          // IoU 0.9
+      detection(800, 0, 900, 40, "EXIT", "EXIT", TextClass::kOther),              // false positive
+      detection(600, 0, 700, 40, "B2-120", "B2-120", TextClass::kParkingNumber),  // ignored
+  };
+  OcrEvaluator evaluator;
+  evaluator.add(truth, detections, {"weak_light"}, 0.5);
+  const OcrEvaluation& r = evaluator.result();
+  const OcrCounts& all = r.overall;
+  EXPECT_EQ(all.truths, 3u);
+  EXPECT_EQ(all.detections, 3u);
+  EXPECT_EQ(all.tp, 2u);
+  EXPECT_EQ(all.fp, 1u);
+  EXPECT_EQ(all.fn, 1u);
+  EXPECT_NEAR(all.meanIoU(), (1.0 + 0.9) / 2.0, 1e-6);
+  EXPECT_DOUBLE_EQ(all.recognitionAccuracy(), 1.0);
+  EXPECT_DOUBLE_EQ(all.recognitionRawAccuracy(), 0.5);
+  EXPECT_DOUBLE_EQ(all.classificationAccuracy(), 0.5);
+  EXPECT_DOUBLE_EQ(all.precision(), 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(all.recall(), 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(all.fMeasure(), 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(all.fpRate(), 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(all.fnRate(), 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(all.endToEndAccuracy(), 2.0 / 3.0);
+
+  const OcrCounts& numbers = r.by_class.at("parking_number");
+  EXPECT_EQ(numbers.truths, 2u);
+  EXPECT_EQ(numbers.tp, 2u);
+  EXPECT_EQ(numbers.fp, 0u);
+  EXPECT_EQ(r.by_class.at("pillar").fn, 1u);
+  EXPECT_EQ(r.by_class.at("other").fp, 1u);  // the false detection's predicted class
+
+  EXPECT_EQ(r.by_condition.at("weak_light").tp, 2u);
+  EXPECT_EQ(r.by_condition.at("rot90").fn, 1u);
+  EXPECT_EQ(r.by_condition.count("bright"), 0u);
+  EXPECT_EQ(r.images, 1u);
+  EXPECT_DOUBLE_EQ(r.imagesPerSecond(), 2.0);
+}
+
+TEST(OcrMetrics, ReadingAngleFollowsTheLabelConvention) {
+  Quad upright = {cv::Point2f(0, 0), cv::Point2f(10, 0), cv::Point2f(10, 4), cv::Point2f(0, 4)};
+  EXPECT_NEAR(readingAngleDeg(upright), 0.0, 1e-9);
+  Quad upside_down = {upright[2], upright[3], upright[0], upright[1]};
+  EXPECT_NEAR(std::fabs(readingAngleDeg(upside_down)), 180.0, 1e-9);
+  // Reading downwards in the image (y grows): +90 in image coordinates.
+  Quad down = {cv::Point2f(4, 0), cv::Point2f(4, 10), cv::Point2f(0, 10), cv::Point2f(0, 0)};
+  EXPECT_NEAR(readingAngleDeg(down), 90.0, 1e-9);
+}
+
+TEST(OcrMetrics, AccumulatesOverImages) {
+  io::ImageLabels truth;
+  truth.instances = {label(0, 0, 100, 40, "117", TextClass::kParkingNumber)};
+  OcrEvaluator evaluator;
+  evaluator.add(truth, {detection(0, 0, 100, 40, "117", "117", TextClass::kParkingNumber)}, {});
+  evaluator.add(truth, {}, {});
+  EXPECT_EQ(evaluator.result().overall.tp, 1u);
+  EXPECT_EQ(evaluator.result().overall.fn, 1u);
+  EXPECT_DOUBLE_EQ(evaluator.result().overall.recall(), 0.5);
+  EXPECT_DOUBLE_EQ(evaluator.result().overall.precision(), 1.0);
+}
+
+}  // namespace
+}  // namespace parkloc::eval

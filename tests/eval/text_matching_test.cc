@@ -1,0 +1,60 @@
+#include "eval/text_matching.h"
+
+#include <gtest/gtest.h>
+
+namespace parkloc::eval {
+namespace {
+
+Quad box(float x0, float y0, float x1, float y1) {
+  return {cv::Point2f(x0, y0), cv::Point2f(x1, y0), cv::Point2f(x1, y1), cv::Point2f(x0, y1)};
+}
+
+TEST(TextMatching, OneToOneAtIoUHalf) {
+  const std::vector<Quad> truths = {box(0, 0, 10, 10), box(100, 0, 110, 10)};
+  // d0 on t0 (IoU 0.81), d1 a duplicate of t0 (IoU 0.64, must not match twice), d2 far off.
+  const std::vector<Quad> detections = {box(1, 1, 10, 10), box(2, 2, 10, 10), box(200, 0, 210, 10)};
+  const ImageMatching m = matchDetections(truths, {false, false}, detections);
+  ASSERT_EQ(m.matches.size(), 1u);
+  EXPECT_EQ(m.matches[0].truth, 0u);
+  EXPECT_EQ(m.matches[0].detection, 0u);
+  EXPECT_NEAR(m.matches[0].iou, 0.81, 1e-6);
+  EXPECT_EQ(m.missed_truths, std::vector<size_t>({1}));
+  EXPECT_EQ(m.false_detections, std::vector<size_t>({1, 2}));
+  EXPECT_TRUE(m.ignored_detections.empty());
+}
+
+TEST(TextMatching, BelowHalfIoUIsNoMatch) {
+  // IoU 1/3: a false positive and a miss.
+  const ImageMatching m = matchDetections({box(0, 0, 10, 10)}, {false}, {box(5, 0, 15, 10)});
+  EXPECT_TRUE(m.matches.empty());
+  EXPECT_EQ(m.missed_truths.size(), 1u);
+  EXPECT_EQ(m.false_detections.size(), 1u);
+}
+
+TEST(TextMatching, GreedyTakesTheBestPairFirst) {
+  // Each detection overlaps both truths (IoU 2/3) and equals one of them (IoU 1): greedy
+  // matching by IoU pairs each with its equal, not the first one it overlaps.
+  const std::vector<Quad> truths = {box(0, 0, 10, 10), box(2, 0, 12, 10)};
+  const std::vector<Quad> detections = {box(2, 0, 12, 10), box(0, 0, 10, 10)};
+  const ImageMatching m = matchDetections(truths, {false, false}, detections);
+  ASSERT_EQ(m.matches.size(), 2u);
+  for (const MatchedPair& p : m.matches) EXPECT_NEAR(p.iou, 1.0, 1e-6);
+}
+
+TEST(TextMatching, DontCareTruthIsNeitherMissedNorAFalsePositive) {
+  const std::vector<Quad> truths = {box(0, 0, 10, 10), box(50, 0, 60, 10)};
+  const std::vector<Quad> detections = {box(0, 0, 10, 10), box(51, 1, 59, 9)};
+  const ImageMatching m = matchDetections(truths, {false, true}, detections);
+  EXPECT_EQ(m.matches.size(), 1u);
+  EXPECT_TRUE(m.missed_truths.empty());
+  EXPECT_TRUE(m.false_detections.empty());
+  EXPECT_EQ(m.ignored_detections, std::vector<size_t>({1}));
+}
+
+TEST(TextMatching, UndetectedDontCareIsNotMissed) {
+  const ImageMatching m = matchDetections({box(0, 0, 10, 10)}, {true}, {});
+  EXPECT_TRUE(m.missed_truths.empty());
+}
+
+}  // namespace
+}  // namespace parkloc::eval

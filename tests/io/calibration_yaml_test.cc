@@ -2,35 +2,18 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "common/error.h"
 #include "geometry/rig.h"
+#include "test_dir.h"
 
 namespace parkloc::io {
 namespace {
-namespace fs = std::filesystem;
 
 // A fresh temporary directory per test, removed afterwards.
-class CalibrationYamlTest : public ::testing::Test {
+class CalibrationYamlTest : public testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("parkloc_calib_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& text) const {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path) << text;
-    return path;
-  }
-
   // The message of the InputError that loading `text` throws ("" when it loads).
   std::string errorFor(const std::string& text) const {
     const std::string path = write("rig.yaml", text);
@@ -41,8 +24,6 @@ class CalibrationYamlTest : public ::testing::Test {
     }
     return "";
   }
-
-  fs::path dir_;
 };
 
 // One camera in the file format, with fields that tests replace.

@@ -1,0 +1,100 @@
+#include "io/labels.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "common/error.h"
+#include "test_dir.h"
+
+namespace parkloc::io {
+namespace {
+
+class LabelsTest : public testing::TempDirTest {};
+
+ImageLabels sampleLabels() {
+  ImageLabels labels;
+  labels.camera = "front";
+  labels.timestamp = 12.35;
+  labels.width = 1280;
+  labels.height = 800;
+  LabelInstance number;
+  number.polygon = {Eigen::Vector2d(100.4, 200.6), Eigen::Vector2d(180.5, 201.0),
+                    Eigen::Vector2d(179.2, 240.49), Eigen::Vector2d(99.0, 239.0)};
+  number.text = "B2-117";
+  number.landmark_id = "B2-117";
+  number.rotation_deg = 37.25;
+  LabelInstance pillar = number;
+  pillar.text = "C3";
+  pillar.cls = map::TextClass::kPillar;
+  pillar.occluded_fraction = 0.6;
+  pillar.truncated = true;
+  pillar.landmark_id = "P-C3";
+  pillar.rotation_deg = 180.0;
+  labels.instances = {number, pillar};
+  return labels;
+}
+
+std::string readAll(const std::string& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST_F(LabelsTest, JsonRoundTripIsExact) {
+  const ImageLabels labels = sampleLabels();
+  saveLabels(labels, path("l.json"));
+  const ImageLabels back = loadLabels(path("l.json"));
+  EXPECT_EQ(back.camera, labels.camera);
+  EXPECT_EQ(back.timestamp, labels.timestamp);
+  EXPECT_EQ(back.width, labels.width);
+  EXPECT_EQ(back.height, labels.height);
+  ASSERT_EQ(back.instances.size(), labels.instances.size());
+  for (size_t i = 0; i < labels.instances.size(); ++i) {
+    const LabelInstance& a = labels.instances[i];
+    const LabelInstance& b = back.instances[i];
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(a.polygon[k], b.polygon[k]);
+    EXPECT_EQ(a.text, b.text);
+    EXPECT_EQ(a.cls, b.cls);
+    EXPECT_EQ(a.occluded_fraction, b.occluded_fraction);
+    EXPECT_EQ(a.truncated, b.truncated);
+    EXPECT_EQ(a.landmark_id, b.landmark_id);
+    EXPECT_EQ(a.rotation_deg, b.rotation_deg);
+  }
+}
+
+TEST_F(LabelsTest, IcdarFileRoundsAndMarksOccludedText) {
+  saveIcdarLabels(sampleLabels(), path("gt.txt"));
+  EXPECT_EQ(readAll(path("gt.txt")),
+            "100,201,181,201,179,240,99,239,B2-117\n"
+            "100,201,181,201,179,240,99,239,###\n");
+}
+
+TEST_F(LabelsTest, MissingFieldIsNamed) {
+  const std::string p = write("bad.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
+      "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "class": "pillar"}]})");
+  try {
+    loadLabels(p);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "labels " + p + ": instance #0: missing field 'text'");
+  }
+}
+
+TEST_F(LabelsTest, PolygonMustHaveFourPoints) {
+  const std::string p = write("bad.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
+      "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1]], "text": "A",
+      "class": "pillar"}]})");
+  try {
+    loadLabels(p);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "labels " + p + ": instance #0: field 'polygon': expected 4 [x, y] points");
+  }
+}
+
+}  // namespace
+}  // namespace parkloc::io

@@ -1,0 +1,181 @@
+#include "io/map_geojson.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "common/error.h"
+#include "test_dir.h"
+
+namespace parkloc::io {
+namespace {
+
+class MapGeoJsonTest : public testing::TempDirTest {};
+
+map::Landmark groundNumber(const std::string& text, double x, double y, double heading) {
+  map::Landmark l;
+  l.id = text;
+  l.text = text;
+  l.cls = map::TextClass::kParkingNumber;
+  l.level = "B1";
+  l.position = {x, y, 0.0};
+  l.heading = heading;
+  l.width = 1.0;
+  l.height = 0.5;
+  return l;
+}
+
+// A map with awkward doubles (thirds, tiny and huge values) in every field.
+map::HdMap awkwardMap() {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-50.0, 50.0);
+  std::vector<map::Landmark> landmarks;
+  for (int i = 0; i < 20; ++i)
+    landmarks.push_back(
+        groundNumber("B1-" + std::to_string(100 + i), u(rng) / 3.0, u(rng) * 1e-7, u(rng) / 7.0));
+  map::Landmark pillar;
+  pillar.id = "P-3";
+  pillar.text = "B1-C3";
+  pillar.cls = map::TextClass::kPillar;
+  pillar.level = "B1";
+  pillar.position = {12.345678901234567, -3.0 / 7.0, 1.6};
+  pillar.heading = M_PI / 2;
+  pillar.width = 0.45;
+  pillar.height = 0.3;
+  pillar.surface = map::Surface::kVertical;
+  pillar.normal = Eigen::Vector3d(std::cos(0.1), std::sin(0.1), 0.0);
+  landmarks.push_back(pillar);
+  map::Landmark exit = groundNumber("EXIT", 1e5 / 3.0, 2.0, -1.0);
+  exit.id = "exit-1";
+  exit.cls = map::TextClass::kOther;
+  exit.normal = Eigen::Vector3d(0.0, 0.0, 1.0);
+  landmarks.push_back(exit);
+  return map::HdMap(landmarks, "awkward");
+}
+
+std::string feature(const std::string& properties, const std::string& coordinates = "[1, 2, 0]") {
+  return R"({"type": "Feature", "geometry": {"type": "Point", "coordinates": )" + coordinates +
+         R"(}, "properties": {)" + properties + "}}";
+}
+std::string collection(const std::string& features) {
+  return R"({"type": "FeatureCollection", "features": [)" + features + "]}";
+}
+const std::string kGood =
+    R"("id": "a", "text": "B1-101", "class": "parking_number", "level": "B1", "heading": 0.5,
+       "width": 1.0, "height": 0.5, "surface": "ground")";
+
+std::string errorFor(const std::string& text) {
+  try {
+    parseMap(text, "m.geojson");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST_F(MapGeoJsonTest, SaveLoadRoundTripIsExact) {
+  const map::HdMap original = awkwardMap();
+  saveMap(original, path("map.geojson"));
+  const map::HdMap back = loadMap(path("map.geojson"));
+  EXPECT_EQ(back.name(), "awkward");
+  ASSERT_EQ(back.size(), original.size());
+  for (size_t i = 0; i < original.size(); ++i) {
+    const map::Landmark& a = original.landmarks()[i];
+    const map::Landmark& b = back.landmarks()[i];
+    EXPECT_EQ(a.id, b.id);
+    EXPECT_EQ(a.text, b.text);
+    EXPECT_EQ(a.cls, b.cls);
+    EXPECT_EQ(a.level, b.level);
+    EXPECT_EQ(a.position, b.position);  // bit-exact
+    EXPECT_EQ(a.heading, b.heading);
+    EXPECT_EQ(a.width, b.width);
+    EXPECT_EQ(a.height, b.height);
+    EXPECT_EQ(a.surface, b.surface);
+    EXPECT_EQ(a.normal, b.normal);
+  }
+  EXPECT_EQ(mapToGeoJson(back), mapToGeoJson(original));
+}
+
+TEST_F(MapGeoJsonTest, MinimalFeatureLoads) {
+  const map::HdMap m = parseMap(collection(feature(kGood)), "m.geojson");
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_EQ(m.landmarks()[0].position, Eigen::Vector3d(1, 2, 0));
+  EXPECT_EQ(m.landmarks()[0].normal, Eigen::Vector3d::UnitZ());
+}
+
+TEST_F(MapGeoJsonTest, MissingFileIsAnError) {
+  EXPECT_THROW(loadMap(path("absent.geojson")), InputError);
+}
+
+TEST_F(MapGeoJsonTest, MalformedJsonGivesThePosition) {
+  const std::string message = errorFor(R"({"type": "FeatureCollection", "features": [ }")");
+  EXPECT_EQ(message.rfind("map m.geojson: malformed JSON at byte 45: ", 0), 0u) << message;
+  EXPECT_NE(message.find("line 1, column 45"), std::string::npos) << message;
+}
+
+TEST_F(MapGeoJsonTest, NotAFeatureCollection) {
+  EXPECT_EQ(errorFor(R"({"type": "Feature"})"),
+            "map m.geojson: expected a GeoJSON FeatureCollection");
+}
+
+TEST_F(MapGeoJsonTest, MissingPropertyNamesFeatureAndProperty) {
+  const std::string props = R"("id": "a", "text": "B1-101", "class": "parking_number",
+      "level": "B1", "heading": 0.5, "width": 1.0, "surface": "ground")";
+  EXPECT_EQ(errorFor(collection(feature(kGood) + "," + feature(props))),
+            "map m.geojson: feature #1 (id 'a'): missing property 'height'");
+}
+
+TEST_F(MapGeoJsonTest, WrongTypeNamesTheType) {
+  const std::string props = R"("id": "a", "text": "B1-101", "class": "parking_number",
+      "level": "B1", "heading": "east", "width": 1.0, "height": 0.5, "surface": "ground")";
+  EXPECT_EQ(errorFor(collection(feature(props))),
+            "map m.geojson: feature #0 (id 'a'): property 'heading': expected a number, got "
+            "string");
+}
+
+TEST_F(MapGeoJsonTest, UnknownClassIsRejected) {
+  const std::string props = R"("id": "a", "text": "B1-101", "class": "arrow", "level": "B1",
+      "heading": 0.5, "width": 1.0, "height": 0.5, "surface": "ground")";
+  EXPECT_EQ(errorFor(collection(feature(props))),
+            "map m.geojson: feature #0 (id 'a'): property 'class': unknown class 'arrow' "
+            "(parking_number, pillar, other)");
+}
+
+TEST_F(MapGeoJsonTest, UnknownSurfaceIsRejected) {
+  const std::string props = R"("id": "a", "text": "B1-101", "class": "pillar", "level": "B1",
+      "heading": 0.5, "width": 1.0, "height": 0.5, "surface": "ceiling")";
+  EXPECT_EQ(errorFor(collection(feature(props))),
+            "map m.geojson: feature #0 (id 'a'): property 'surface': unknown surface 'ceiling' "
+            "(ground, vertical)");
+}
+
+TEST_F(MapGeoJsonTest, VerticalTextNeedsANormal) {
+  const std::string props = R"("id": "p", "text": "C3", "class": "pillar", "level": "B1",
+      "heading": 0.5, "width": 1.0, "height": 0.5, "surface": "vertical")";
+  EXPECT_EQ(errorFor(collection(feature(props))),
+            "map m.geojson: feature #0 (id 'p'): missing property 'normal'");
+}
+
+TEST_F(MapGeoJsonTest, DuplicateIdNamesBothFeatures) {
+  const std::string other = R"("id": "a", "text": "B1-102", "class": "parking_number",
+      "level": "B1", "heading": 0.5, "width": 1.0, "height": 0.5, "surface": "ground")";
+  EXPECT_EQ(errorFor(collection(feature(kGood) + "," + feature(other))),
+            "map m.geojson: feature #1: duplicate id 'a' (first at feature #0)");
+}
+
+TEST_F(MapGeoJsonTest, ParkingNumberTwiceOnOneLevelIsRejected) {
+  const std::string twin = R"("id": "b", "text": "B1-101", "class": "parking_number",
+      "level": "B1", "heading": 0.5, "width": 1.0, "height": 0.5, "surface": "ground")";
+  EXPECT_EQ(errorFor(collection(feature(kGood) + "," + feature(twin))),
+            "map m.geojson: landmark 'b': parking number 'B1-101' appears twice on level 'B1'");
+}
+
+TEST_F(MapGeoJsonTest, SameParkingNumberOnTwoLevelsIsFine) {
+  const std::string other_level = R"("id": "b", "text": "B1-101", "class": "parking_number",
+      "level": "B2", "heading": 0.5, "width": 1.0, "height": 0.5, "surface": "ground")";
+  EXPECT_EQ(errorFor(collection(feature(kGood) + "," + feature(other_level))), "");
+}
+
+}  // namespace
+}  // namespace parkloc::io

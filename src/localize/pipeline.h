@@ -32,6 +32,9 @@ namespace parkloc::localize {
 // How the paper's pipeline (no yaw estimate of its own) gets the heading it needs to turn
 // vehicle-frame offsets into map offsets.
 enum class PaperHeadingSource {
+  // The reading direction of the text (two polygon edges through the same ground
+  // homography) against the landmark's map heading: ground-truth free, one text suffices.
+  kTextDirection,
   // Direction of travel between successive position fixes (ground-truth free); before
   // the first two fixes, and when standing still, the last heading is kept (initially 0,
   // or PipelineOptions::initial_pose when given).
@@ -52,7 +55,7 @@ struct PipelineOptions {
   bool mcap = true;  // use every landmark, not only the first (section 3.5)
   int afm_queue_length = 30;
   double afm_iqr_factor = 1.5;
-  PaperHeadingSource paper_heading = PaperHeadingSource::kMotionDirection;
+  PaperHeadingSource paper_heading = PaperHeadingSource::kTextDirection;
   // Paper mode text centre: true = mean of the four polygon corners, false = centre of the
   // axis-aligned bounding box (the paper's "box").
   bool paper_centre_from_polygon = true;

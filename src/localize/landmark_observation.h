@@ -1,0 +1,20 @@
+#pragma once
+// One text instance matched to a map landmark: its four image corners and the landmark's
+// four corners, both in reading order (top-left, top-right, bottom-right, bottom-left), so
+// corner i of the image belongs to corner i of the map.
+#include <Eigen/Core>
+#include <array>
+#include <string>
+
+namespace parkloc::localize {
+
+struct LandmarkObservation {
+  int camera = -1;  // index into Rig::cameras
+  std::string landmark_id;
+  std::array<Eigen::Vector2d, 4> pixels;
+  // Map x, y; z is the height above the floor the vehicle stands on.
+  std::array<Eigen::Vector3d, 4> map_corners;
+  int tag = -1;  // caller's index (e.g. into the association list)
+};
+
+}  // namespace parkloc::localize

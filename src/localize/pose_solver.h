@@ -1,0 +1,72 @@
+#pragma once
+// Single-frame SE(2) pose from every corner of every associated text (beyond the paper):
+// robust (Huber IRLS) Gauss-Newton on the reprojection error in the image, with analytic
+// Jacobians.
+//
+// Why the image and not the ground: the corner noise is in pixels and roughly isotropic
+// there, while its footprint on the ground grows with range and is strongly anisotropic on
+// a fisheye; reprojection weights every corner correctly, needs no plane assumption for
+// pillar text (its map corners are 3-D) and degrades gracefully near the horizon, where a
+// ray/ground intersection blows up. Ray/plane casting is used only to initialise.
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/pose.h"
+#include "geometry/rig.h"
+#include "localize/landmark_observation.h"
+
+namespace parkloc::localize {
+
+struct SolverOptions {
+  double pixel_sigma = 1.5;         // corner noise (1 sigma, pixels) for the covariance
+  double huber_threshold_px = 3.0;  // Huber IRLS threshold on a corner's pixel error
+  int max_iterations = 20;
+  double step_tolerance = 1e-9;  // converged when |dx| + |dy| + |dyaw| falls below
+  // Hypothesis scoring: an observation is an inlier when its mean corner error is below.
+  double inlier_threshold_px = 10.0;
+};
+
+struct SolverResult {
+  bool ok = false;         // a pose came out (converged, enough corners, well conditioned)
+  bool converged = false;  // the Gauss-Newton step fell below step_tolerance
+  std::string failure;     // why not ok
+  int iterations = 0;
+  geometry::Pose2 pose;                                  // map_from_vehicle
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  // (x, y, yaw)
+  double rms_px = 0.0;                                   // over inlier corners
+  // Per observation, in input order: mean corner error (pixels; infinity when it does not
+  // project) and whether it was used.
+  std::vector<double> residual_px;
+  std::vector<bool> inlier;
+};
+
+// The reprojection of one map corner for pose map_from_vehicle, with d pixel / d (x, y, yaw).
+struct CornerProjection {
+  Eigen::Vector2d pixel;
+  Eigen::Matrix<double, 2, 3> J_pixel_pose;
+};
+std::optional<CornerProjection> projectMapCorner(const geometry::RigCamera& camera,
+                                                 const geometry::Pose2& map_from_vehicle,
+                                                 const Eigen::Vector3d& map_corner);
+
+// Closed-form pose from one observation: each corner's ray meets the horizontal plane at
+// the corner's height (the ground for painted text; for pillar text the map gives the
+// height), then a 2-D rigid alignment of the four points. Empty when a ray misses.
+std::optional<geometry::Pose2> poseFromObservation(const geometry::RigCamera& camera,
+                                                   const LandmarkObservation& observation);
+
+// Gauss-Newton with Huber weights from `initial`, using the observations with use[i] set
+// (all when `use` is empty).
+SolverResult refinePose(const geometry::Rig& rig, const std::vector<LandmarkObservation>& obs,
+                        const geometry::Pose2& initial, const SolverOptions& options = {},
+                        const std::vector<bool>& use = {});
+
+// Robust solve: hypotheses from each observation alone (and from `prior` when given),
+// the one with the most inliers (ties: the smaller error) refined on its inliers.
+SolverResult solvePose(const geometry::Rig& rig, const std::vector<LandmarkObservation>& obs,
+                       const std::optional<geometry::Pose2>& prior = std::nullopt,
+                       const SolverOptions& options = {});
+
+}  // namespace parkloc::localize

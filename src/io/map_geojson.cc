@@ -151,30 +151,35 @@ map::HdMap loadMap(const std::string& path) {
 }
 
 std::string mapToGeoJson(const map::HdMap& map) {
-  json features = json::array();
-  for (const map::Landmark& l : map.landmarks()) {
-    json props = {{"id", l.id},
-                  {"text", l.text},
-                  {"class", map::toString(l.cls)},
-                  {"level", l.level},
-                  {"heading", l.heading},
-                  {"width", l.width},
-                  {"height", l.height},
-                  {"surface", map::toString(l.surface)}};
+  // Insertion-ordered keys and one feature per line: readable, and diffs show one landmark.
+  using ordered = nlohmann::ordered_json;
+  std::string out = "{\"type\": \"FeatureCollection\",\n";
+  if (!map.name().empty()) out += " \"name\": " + ordered(map.name()).dump() + ",\n";
+  out += " \"crs\": \"local metric frame: metres, x east, y north, z up\",\n";
+  out += " \"features\": [";
+  const auto& landmarks = map.landmarks();
+  for (size_t i = 0; i < landmarks.size(); ++i) {
+    const map::Landmark& l = landmarks[i];
+    ordered props = {{"id", l.id},
+                     {"text", l.text},
+                     {"class", map::toString(l.cls)},
+                     {"level", l.level},
+                     {"heading", l.heading},
+                     {"width", l.width},
+                     {"height", l.height},
+                     {"surface", map::toString(l.surface)}};
     if (l.surface == map::Surface::kVertical || l.normal != Eigen::Vector3d::UnitZ())
       props["normal"] = {l.normal.x(), l.normal.y(), l.normal.z()};
-    features.push_back(
-        {{"type", "Feature"},
-         {"geometry",
-          {{"type", "Point"}, {"coordinates", {l.position.x(), l.position.y(), l.position.z()}}}},
-         {"properties", std::move(props)}});
+    const ordered feature = {
+        {"type", "Feature"},
+        {"geometry",
+         {{"type", "Point"}, {"coordinates", {l.position.x(), l.position.y(), l.position.z()}}}},
+        {"properties", std::move(props)}};
+    // nlohmann prints doubles in their shortest round-trip form, so a reload is exact.
+    out += (i ? ",\n  " : "\n  ") + feature.dump();
   }
-  json doc = {{"type", "FeatureCollection"}};
-  if (!map.name().empty()) doc["name"] = map.name();
-  doc["crs"] = "local metric frame: metres, x east, y north, z up";
-  doc["features"] = std::move(features);
-  // nlohmann prints doubles in their shortest round-trip form, so a reload is exact.
-  return doc.dump(1) + "\n";
+  out += landmarks.empty() ? "]\n}\n" : "\n ]\n}\n";
+  return out;
 }
 
 void saveMap(const map::HdMap& map, const std::string& path) {

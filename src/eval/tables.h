@@ -1,0 +1,51 @@
+#pragma once
+// The paper's tables, filled from measured results: Table 3 (text spotting and the anomaly
+// filter), Table 5 (accuracy and latency against other positioning), Table 8 (position error
+// per condition) and Table 10 (ablation of AFM / MCRP / MCAP).
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "eval/ocr_metrics.h"
+#include "eval/report.h"
+
+namespace parkloc::eval {
+
+// What the paper's anomaly filter did to the parking numbers read on full frames: a reading
+// is an anomaly when it is not the labelled text of a real instance (a misreading or a
+// false detection). Table 3's "Filter Accuracy" is the share of anomalies removed, its
+// "Overall Recognition Accuracy" the share of correct readings among those kept.
+struct AnomalyFilterCounts {
+  size_t readings = 0;            // parking-number readings offered to the filter
+  size_t anomalies = 0;           // of which wrong
+  size_t anomalies_rejected = 0;  // wrong and rejected (not in map, box-plot outlier)
+  size_t kept = 0;                // accepted by the filter
+  size_t kept_correct = 0;        // accepted and right
+  double filterAccuracy() const { return ratio(anomalies_rejected, anomalies); }
+  double overallRecognitionAccuracy() const { return ratio(kept_correct, kept); }
+
+ private:
+  static double ratio(size_t a, size_t b) {
+    return b ? static_cast<double>(a) / static_cast<double>(b) : 0.0;
+  }
+};
+
+Table table3(const OcrEvaluation& ocr, const std::optional<AnomalyFilterCounts>& afm);
+// OCR metrics per condition subset (the conditions of Table 8 applied to Table 3).
+Table table3Conditions(const OcrEvaluation& ocr);
+
+struct AblationRow {
+  bool afm = false, mcrp = false, mcap = false;
+  VariantResult result;
+};
+// The 8 paper combinations, then extra rows (parkloc, oracle OCR) given as plain variants.
+Table table10(const std::vector<AblationRow>& paper_rows, const std::vector<VariantResult>& extra);
+
+// Position error per condition for each variant: variant -> condition -> error.
+Table table8(
+    const std::vector<std::pair<std::string, std::map<std::string, TrajectoryError>>>& per_variant);
+
+Table table5(const std::vector<VariantResult>& variants);
+
+}  // namespace parkloc::eval

@@ -1,6 +1,63 @@
 #include "localize/pipeline.h"
 
+#include <fmt/format.h>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "common/error.h"
+#include "geometry/ground_projection.h"
+#include "localize/association_gate.h"
+#include "localize/box_plot_filter.h"
+#include "localize/floor_heights.h"
+#include "localize/paper_projection.h"
+#include "localize/pose_ekf.h"
+#include "localize/pose_solver.h"
+#include "localize/roi_prediction.h"
+
 namespace parkloc::localize {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double positionSigma(const Eigen::Matrix3d& covariance) {
+  const Eigen::Matrix2d p = covariance.topLeftCorner<2, 2>();
+  return std::sqrt(
+      std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(p, Eigen::EigenvaluesOnly)
+                        .eigenvalues()
+                        .maxCoeff()));
+}
+
+std::array<Eigen::Vector2d, 4> toEigen(const std::array<cv::Point2f, 4>& polygon) {
+  std::array<Eigen::Vector2d, 4> out;
+  for (int i = 0; i < 4; ++i) out[i] = {polygon[i].x, polygon[i].y};
+  return out;
+}
+
+double polygonArea(const std::array<Eigen::Vector2d, 4>& q) {
+  double a = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const auto& p = q[i];
+    const auto& n = q[(i + 1) % 4];
+    a += 0.5 * (p.x() * n.y() - p.y() * n.x());
+  }
+  return std::abs(a);
+}
+
+// A fix's covariance as the filter sees it: inflated, with a floor (1 cm, 0.05 degrees).
+Eigen::Matrix3d fixCovariance(const Eigen::Matrix3d& solver, double inflation) {
+  Eigen::Matrix3d R = inflation * solver;
+  const double yaw_floor = 0.05 * M_PI / 180.0;
+  R.diagonal() += Eigen::Vector3d(1e-4, 1e-4, yaw_floor * yaw_floor);
+  return R;
+}
+
+}  // namespace
 
 PipelineOptions PipelineOptions::paper() {
   PipelineOptions o;
@@ -55,23 +112,540 @@ struct Pipeline::Impl {
   map::HdMap map;
   PipelineOptions options;
   ocr::TextSpotter* spotter = nullptr;
+
+  FloorHeights floors;
+  std::vector<geometry::GroundHomography> homographies;
+  std::vector<std::string> lexicon;  // every text of the map (full-frame spotting)
+  SolverOptions solver_options;
+  GateOptions gate_options;
+  RoiOptions roi_options;
+
+  // State.
+  BoxPlotFilter afm;
+  PoseEkf ekf;
+  bool have_frame = false;
+  double last_frame_time = 0.0;
+  bool have_odometry = false;
+  io::OdometrySample hold;  // latest odometry sample (zero-order hold)
+  int frames_since_full_frame = 0;
+  // Re-localisation: consecutive fixes that disagree with the filter.
+  int disagreeing_fixes = 0;
+  bool disagreeing_with_consensus = false;  // one of them had two or more landmarks
+  geometry::Pose2 last_disagreeing_fix;
+  geometry::Pose2 predicted_at_last_disagreeing_fix;
+  // Paper mode.
+  bool paper_has_pose = false;
+  geometry::Pose2 paper_pose;
+  double paper_yaw = 0.0;
+  Eigen::Vector2d paper_motion_anchor = Eigen::Vector2d::Zero();
+
+  Impl(geometry::Rig r, map::HdMap m, const PipelineOptions& o, ocr::TextSpotter* s)
+      : rig(std::move(r)), map(std::move(m)), options(o), spotter(s), floors(map) {
+    for (const auto& camera : rig.cameras)
+      homographies.push_back(geometry::GroundHomography::fromCamera(camera));
+    for (const auto& l : map.landmarks())
+      if (options.level.empty() || l.level == options.level) lexicon.push_back(l.text);
+    solver_options.pixel_sigma = options.pixel_sigma;
+    solver_options.huber_threshold_px = options.huber_threshold_px;
+    solver_options.max_iterations = options.solver_max_iterations;
+    solver_options.inlier_threshold_px = options.inlier_threshold_px;
+    gate_options.min_radius_m = options.gate_min_radius_m;
+    roi_options.margin_px = options.roi_margin_px;
+    roi_options.min_size_px = options.roi_min_size_px;
+    EkfOptions ekf_options;
+    ekf_options.speed_sigma = options.odo_speed_sigma;
+    ekf_options.yaw_rate_sigma = options.odo_yaw_rate_sigma;
+    ekf_options.no_odometry_position_sigma = options.no_odometry_pos_sigma;
+    ekf_options.no_odometry_yaw_sigma = options.no_odometry_yaw_sigma;
+    ekf = PoseEkf(ekf_options);
+    reset();
+  }
+
+  void reset() {
+    BoxPlotFilterOptions afm_options;
+    afm_options.queue_length = static_cast<size_t>(std::max(1, options.afm_queue_length));
+    afm_options.iqr_factor = options.afm_iqr_factor;
+    afm_options.reset_after_rejections =
+        static_cast<size_t>(std::max(0, options.afm_reset_after_rejections));
+    afm = BoxPlotFilter(afm_options);
+    ekf.reset();
+    have_frame = false;
+    have_odometry = false;
+    hold = {};
+    frames_since_full_frame = 0;
+    disagreeing_fixes = 0;
+    disagreeing_with_consensus = false;
+    paper_has_pose = false;
+    paper_yaw = 0.0;
+    if (options.initial_pose) {
+      paper_pose = *options.initial_pose;
+      paper_yaw = options.initial_pose->yaw;
+      paper_has_pose = options.paper_mode;
+      paper_motion_anchor = paper_pose.translation();
+      if (!options.paper_mode) {
+        const double yaw_sigma = 2.0 * M_PI / 180.0;
+        ekf.initialise(*options.initial_pose,
+                       Eigen::Vector3d(0.1 * 0.1, 0.1 * 0.1, yaw_sigma * yaw_sigma).asDiagonal(),
+                       0.0);
+      }
+    }
+  }
+
+  bool tracking() const {
+    return ekf.initialised() && positionSigma(ekf.covariance()) <= options.lost_position_sigma_m;
+  }
+
+  // Moves the filter to time t with the held odometry (or a random walk without it).
+  void predictTo(double t, std::vector<std::string>& warnings) {
+    if (!ekf.initialised()) return;
+    const double dt = t - ekf.time();
+    if (!(dt > 0.0)) return;
+    if (options.use_odometry && have_odometry) {
+      const double age = t - hold.timestamp;
+      const double covered =
+          std::min(dt, std::max(0.0, options.odometry_gap_s - (ekf.time() - hold.timestamp)));
+      if (age > options.odometry_gap_s)
+        warnings.push_back(fmt::format("odometry gap: the last sample is {:.3f} s old", age));
+      ekf.predictWithOdometry(hold.speed, hold.yaw_rate, dt);
+      if (dt > covered) ekf.predictWithoutOdometry(dt - covered);
+    } else {
+      ekf.predictWithoutOdometry(dt);
+    }
+    ekf.setTime(t);
+  }
+
+  void consumeOdometry(const FrameInput& frame, bool time_ok, std::vector<std::string>& warnings) {
+    for (const auto& s : frame.odometry) {
+      if (!std::isfinite(s.timestamp) || !std::isfinite(s.speed) || !std::isfinite(s.yaw_rate)) {
+        warnings.push_back(
+            fmt::format("odometry sample at {} is not finite: skipped", s.timestamp));
+        continue;
+      }
+      if (have_odometry && s.timestamp <= hold.timestamp) {
+        warnings.push_back(fmt::format("odometry sample at {:.6f} not after {:.6f}: skipped",
+                                       s.timestamp, hold.timestamp));
+        continue;
+      }
+      if (time_ok && s.timestamp > frame.timestamp) {
+        warnings.push_back(fmt::format(
+            "odometry sample at {:.6f} is after the frame: used from now", s.timestamp));
+      }
+      if (time_ok && ekf.initialised() && !options.paper_mode)
+        predictTo(std::min(s.timestamp, frame.timestamp), warnings);
+      if (options.paper_mode && options.paper_heading == PaperHeadingSource::kOdometry &&
+          have_odometry)
+        paper_yaw += hold.yaw_rate * (s.timestamp - hold.timestamp);
+      hold = s;
+      have_odometry = true;
+    }
+    if (options.paper_mode && options.paper_heading == PaperHeadingSource::kOdometry &&
+        have_odometry && time_ok && frame.timestamp > hold.timestamp) {
+      // Integrate up to the frame without consuming the sample.
+      paper_yaw += hold.yaw_rate * (frame.timestamp - hold.timestamp);
+      hold.timestamp = frame.timestamp;
+    }
+  }
+
+  FrameResult process(const FrameInput& frame);
+  void measureParkloc(const std::vector<LandmarkObservation>& inside,
+                      const std::vector<LandmarkObservation>& outside, FrameResult& result);
+  void measurePaper(const std::vector<LandmarkObservation>& accepted, FrameResult& result);
+  std::vector<LandmarkObservation> selectForModules(std::vector<LandmarkObservation> obs) const;
+  void markSolve(const std::vector<LandmarkObservation>& obs, const SolverResult& solve,
+                 FrameResult& result) const;
 };
+
+std::vector<LandmarkObservation> Pipeline::Impl::selectForModules(
+    std::vector<LandmarkObservation> obs) const {
+  // Without MCRP one camera per landmark (the first in rig order); without MCAP only the
+  // landmark that looks largest (the nearest, the most precise).
+  if (!options.mcrp) {
+    std::vector<LandmarkObservation> kept;
+    for (const auto& o : obs) {
+      bool seen = false;
+      for (const auto& k : kept) seen = seen || k.landmark_id == o.landmark_id;
+      if (!seen) kept.push_back(o);
+    }
+    obs = std::move(kept);
+  }
+  if (!options.mcap && !obs.empty()) {
+    size_t best = 0;
+    for (size_t i = 1; i < obs.size(); ++i)
+      if (polygonArea(obs[i].pixels) > polygonArea(obs[best].pixels)) best = i;
+    const std::string id = obs[best].landmark_id;
+    std::vector<LandmarkObservation> kept;
+    for (const auto& o : obs)
+      if (o.landmark_id == id) kept.push_back(o);
+    obs = std::move(kept);
+  }
+  return obs;
+}
+
+void Pipeline::Impl::markSolve(const std::vector<LandmarkObservation>& obs,
+                               const SolverResult& solve, FrameResult& result) const {
+  for (size_t o = 0; o < obs.size(); ++o) {
+    auto& a = result.associations[obs[o].tag];
+    if (o < solve.residual_px.size() && std::isfinite(solve.residual_px[o]))
+      a.residual_px = solve.residual_px[o];
+    if (o < solve.inlier.size() && !solve.inlier[o]) a.verdict = AssociationVerdict::kSolverOutlier;
+  }
+}
+
+void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& inside,
+                                    const std::vector<LandmarkObservation>& outside,
+                                    FrameResult& result) {
+  const auto t_solver = Clock::now();
+  const bool was_tracking = tracking();
+  std::optional<SolverResult> fix;          // agrees with the filter (or initialises it)
+  std::optional<SolverResult> disagreeing;  // a good fix far from the prediction
+  auto landmarksIn = [](const std::vector<LandmarkObservation>& obs, const SolverResult& s) {
+    std::vector<std::string> ids;
+    for (size_t o = 0; o < obs.size(); ++o)
+      if (s.inlier[o] && std::find(ids.begin(), ids.end(), obs[o].landmark_id) == ids.end())
+        ids.push_back(obs[o].landmark_id);
+    return static_cast<int>(ids.size());
+  };
+  int disagreeing_landmarks = 0;
+
+  if (was_tracking) {
+    if (!inside.empty()) {
+      const SolverResult s = solvePose(rig, inside, ekf.pose(), solver_options);
+      result.solver_iterations = s.iterations;
+      result.solver_converged = s.converged;
+      markSolve(inside, s, result);
+      if (s.ok) {
+        const Eigen::Matrix3d R = fixCovariance(s.covariance, options.fix_covariance_inflation);
+        result.measurement = s.pose;
+        result.measurement_covariance = R;
+        if (ekf.mahalanobis2(s.pose, R) <= options.fix_gate_chi2) {
+          fix = s;
+        } else {
+          disagreeing = s;
+          disagreeing_landmarks = landmarksIn(inside, s);
+          result.warnings.push_back("pose fix outside the filter's gate");
+        }
+      } else {
+        result.warnings.push_back("solver: " + s.failure);
+      }
+    }
+    if (!fix && !outside.empty()) {
+      // Everything seen is far from the prediction: is it a consistent other place?
+      std::vector<LandmarkObservation> all = inside;
+      all.insert(all.end(), outside.begin(), outside.end());
+      const SolverResult s = solvePose(rig, all, std::nullopt, solver_options);
+      if (s.ok &&
+          ekf.mahalanobis2(s.pose, fixCovariance(s.covariance, options.fix_covariance_inflation)) >
+              options.fix_gate_chi2) {
+        disagreeing = s;
+        disagreeing_landmarks = landmarksIn(all, s);
+        if (!result.measurement) {
+          result.measurement = s.pose;
+          result.measurement_covariance =
+              fixCovariance(s.covariance, options.fix_covariance_inflation);
+        }
+      }
+    }
+  } else if (!inside.empty()) {
+    const SolverResult s = solvePose(rig, inside, std::nullopt, solver_options);
+    result.solver_iterations = s.iterations;
+    result.solver_converged = s.converged;
+    markSolve(inside, s, result);
+    if (s.ok) {
+      fix = s;
+      result.measurement = s.pose;
+      result.measurement_covariance = fixCovariance(s.covariance, options.fix_covariance_inflation);
+    } else {
+      result.warnings.push_back("solver: " + s.failure);
+    }
+  }
+  result.timings.solver_ms += msSince(t_solver);
+
+  const auto t_filter = Clock::now();
+  if (fix) {
+    const Eigen::Matrix3d R = fixCovariance(fix->covariance, options.fix_covariance_inflation);
+    if (was_tracking) {
+      ekf.update(fix->pose, R);
+    } else {
+      // First fix, or re-localisation after the filter got lost.
+      ekf.initialise(fix->pose, R, result.timestamp);
+      result.reinitialised = true;
+    }
+    disagreeing_fixes = 0;
+    disagreeing_with_consensus = false;
+    result.status = TrackingStatus::kOk;
+  } else if (disagreeing) {
+    // A kidnapped vehicle (or a filter that went wrong): several consecutive fixes that
+    // agree with each other but not with the filter re-initialise it.
+    bool consistent = disagreeing_fixes > 0;
+    if (consistent) {
+      const geometry::Pose2 motion = predicted_at_last_disagreeing_fix.inverse() * ekf.pose();
+      const geometry::Pose2 expected = last_disagreeing_fix * motion;
+      consistent =
+          (expected.translation() - disagreeing->pose.translation()).norm() < 1.0 &&
+          std::abs(geometry::wrapAngle(expected.yaw - disagreeing->pose.yaw)) < 10.0 * M_PI / 180.0;
+    }
+    disagreeing_fixes = consistent ? disagreeing_fixes + 1 : 1;
+    disagreeing_with_consensus =
+        (consistent && disagreeing_with_consensus) || disagreeing_landmarks >= 2;
+    last_disagreeing_fix = disagreeing->pose;
+    predicted_at_last_disagreeing_fix = ekf.pose();
+    const int needed = std::max(1, options.reinit_after_rejected_fixes);
+    if (disagreeing_fixes >= (disagreeing_with_consensus ? needed : 2 * needed)) {
+      ekf.initialise(disagreeing->pose,
+                     fixCovariance(disagreeing->covariance, options.fix_covariance_inflation),
+                     result.timestamp);
+      result.reinitialised = true;
+      result.status = TrackingStatus::kOk;
+      result.warnings.push_back(
+          fmt::format("re-initialised from {} consecutive disagreeing fixes", disagreeing_fixes));
+      disagreeing_fixes = 0;
+      disagreeing_with_consensus = false;
+    }
+  }
+  result.timings.filter_ms += msSince(t_filter);
+
+  if (ekf.initialised()) {
+    result.has_pose = true;
+    result.pose = ekf.pose();
+    result.covariance = ekf.covariance();
+    if (result.status != TrackingStatus::kOk)
+      result.status = tracking() ? TrackingStatus::kDeadReckoning : TrackingStatus::kLost;
+  }
+}
+
+void Pipeline::Impl::measurePaper(const std::vector<LandmarkObservation>& accepted,
+                                  FrameResult& result) {
+  const auto t_solver = Clock::now();
+  std::vector<PaperObservation> observations;
+  for (const auto& o : accepted) {
+    const auto& camera = rig.cameras[o.camera];
+    auto p = paperObserve(homographies[o.camera], camera.model, o.pixels,
+                          options.paper_centre_from_polygon);
+    auto& association = result.associations[o.tag];
+    if (!p) {
+      association.verdict = AssociationVerdict::kNoGeometry;
+      continue;
+    }
+    const map::Landmark* landmark = map.findById(o.landmark_id);
+    p->camera = o.camera;
+    p->landmark_id = o.landmark_id;
+    p->map_position = landmark->position.head<2>();
+    p->map_heading = landmark->heading;
+    observations.push_back(*p);
+  }
+  if (options.paper_heading == PaperHeadingSource::kTextDirection ||
+      (options.paper_heading == PaperHeadingSource::kOdometry && !paper_has_pose)) {
+    if (const auto yaw = headingFromTextDirections(observations)) paper_yaw = *yaw;
+  }
+  const auto fix = paperFuse(observations, paper_yaw, options.mcrp, options.mcap);
+  if (fix) {
+    if (options.paper_heading == PaperHeadingSource::kMotionDirection) {
+      const Eigen::Vector2d moved = fix->position - paper_motion_anchor;
+      if (paper_has_pose && moved.norm() > 0.5) {
+        paper_yaw = std::atan2(moved.y(), moved.x());
+        paper_motion_anchor = fix->position;
+      } else if (!paper_has_pose) {
+        paper_motion_anchor = fix->position;
+      }
+    }
+    paper_pose = geometry::Pose2(fix->position.x(), fix->position.y(), paper_yaw);
+    paper_has_pose = true;
+    result.status = TrackingStatus::kOk;
+    result.measurement = paper_pose;
+    result.solver_converged = true;
+  }
+  result.timings.solver_ms += msSince(t_solver);
+  if (paper_has_pose) {
+    result.has_pose = true;
+    result.pose = geometry::Pose2(paper_pose.x, paper_pose.y, paper_yaw);
+    // Nominal: the paper reports about 5 cm with all modules; no heading estimate of its own.
+    const double sigma = fix ? 0.1 / std::sqrt(std::max(1, fix->landmarks)) : 0.5;
+    const double yaw_sigma = 5.0 * M_PI / 180.0;
+    result.covariance =
+        Eigen::Vector3d(sigma * sigma, sigma * sigma, yaw_sigma * yaw_sigma).asDiagonal();
+    if (fix) result.measurement_covariance = result.covariance;
+    if (result.status != TrackingStatus::kOk) result.status = TrackingStatus::kDeadReckoning;
+  }
+}
+
+FrameResult Pipeline::Impl::process(const FrameInput& frame) {
+  const auto t_start = Clock::now();
+  FrameResult result;
+  result.timestamp = frame.timestamp;
+
+  // 1. Motion prediction to this frame.
+  auto t_filter = Clock::now();
+  bool time_ok = std::isfinite(frame.timestamp);
+  if (!time_ok) result.warnings.push_back("frame timestamp is not finite: no prediction");
+  if (time_ok && have_frame && frame.timestamp <= last_frame_time) {
+    result.warnings.push_back(
+        fmt::format("frame at {:.6f} is not after the previous one ({:.6f}): "
+                    "no prediction",
+                    frame.timestamp, last_frame_time));
+    time_ok = false;
+  }
+  // A filter started from options.initial_pose starts its clock at the first frame.
+  if (time_ok && !have_frame && ekf.initialised()) ekf.setTime(frame.timestamp);
+  consumeOdometry(frame, time_ok, result.warnings);
+  if (time_ok && !options.paper_mode) predictTo(frame.timestamp, result.warnings);
+  if (time_ok) {
+    have_frame = true;
+    last_frame_time = frame.timestamp;
+  }
+  result.timings.filter_ms += msSince(t_filter);
+  const bool is_tracking = !options.paper_mode && tracking();
+
+  // 2. Where to look: map-guided regions while tracking, the full frame now and then.
+  const auto t_roi = Clock::now();
+  const bool full_frame = options.paper_mode || !options.map_guided || !is_tracking ||
+                          frames_since_full_frame + 1 >= std::max(1, options.full_frame_interval);
+  frames_since_full_frame = full_frame ? 0 : frames_since_full_frame + 1;
+  std::vector<const map::Landmark*> nearby;
+  if (!full_frame)
+    nearby = map.withinRadius(ekf.pose().translation(), options.roi_radius_m, options.level);
+  result.timings.roi_ms += msSince(t_roi);
+
+  // 3. Spotting, camera by camera in rig order.
+  for (const auto& input : frame.cameras)
+    if (!rig.find(input.camera))
+      result.warnings.push_back("camera '" + input.camera + "' is not in the rig: ignored");
+  for (size_t c = 0; c < rig.cameras.size(); ++c) {
+    const auto& camera = rig.cameras[c];
+    CameraResult camera_result;
+    camera_result.camera = camera.name;
+    camera_result.full_frame = full_frame;
+    const CameraInput* input = nullptr;
+    for (const auto& in : frame.cameras)
+      if (in.camera == camera.name) input = &in;
+    if (!input) {
+      camera_result.image_ok = false;
+      result.warnings.push_back("camera '" + camera.name + "': no input this frame");
+      result.cameras.push_back(std::move(camera_result));
+      continue;
+    }
+    if (input->instances) {
+      camera_result.instances = *input->instances;
+    } else if (input->image.empty()) {
+      camera_result.image_ok = false;
+      result.warnings.push_back("camera '" + camera.name + "': image missing or corrupt, skipped");
+    } else if (!spotter) {
+      result.warnings.push_back("camera '" + camera.name + "': no spotter and no instances");
+    } else {
+      ocr::SpotRequest request;
+      if (!full_frame) {
+        const auto t_regions = Clock::now();
+        request.regions =
+            predictRegions(camera, nearby, floors, ekf.pose(), ekf.covariance(), roi_options);
+        for (const auto& r : request.regions)
+          request.lexicon.insert(request.lexicon.end(), r.expected_texts.begin(),
+                                 r.expected_texts.end());
+        camera_result.regions = static_cast<int>(request.regions.size());
+        result.timings.roi_ms += msSince(t_regions);
+      } else {
+        request.lexicon = lexicon;
+      }
+      const auto t_spot = Clock::now();
+      if (full_frame || !request.regions.empty()) {
+        try {
+          camera_result.instances = spotter->spot(input->image, request);
+        } catch (const InputError& e) {
+          camera_result.image_ok = false;
+          result.warnings.push_back("camera '" + camera.name + "': " + e.what());
+        }
+      }
+      result.timings.spotting_ms += msSince(t_spot);
+    }
+    result.cameras.push_back(std::move(camera_result));
+  }
+
+  // 4. Association: class, score, AFM (paper 3.3), exact matching (3.3), gating.
+  const auto t_assoc = Clock::now();
+  std::vector<LandmarkObservation> inside, outside;
+  for (size_t c = 0; c < result.cameras.size(); ++c) {
+    const auto& instances = result.cameras[c].instances;
+    for (size_t i = 0; i < instances.size(); ++i) {
+      const auto& instance = instances[i];
+      Association a;
+      a.camera = result.cameras[c].camera;
+      a.instance_index = static_cast<int>(i);
+      a.text = instance.text;
+      const int tag = static_cast<int>(result.associations.size());
+      const bool usable_class =
+          (instance.cls == map::TextClass::kParkingNumber && options.use_parking_numbers) ||
+          (instance.cls == map::TextClass::kPillar && options.use_pillar_text &&
+           !options.paper_mode);
+      if (!usable_class) {
+        a.verdict = AssociationVerdict::kWrongClass;
+      } else if (instance.recognition_score < options.min_recognition_score) {
+        a.verdict = AssociationVerdict::kLowScore;
+      } else if (const auto number = parkingNumberValue(instance.text);
+                 options.afm && instance.cls == map::TextClass::kParkingNumber && number &&
+                 !afm.accept(*number)) {
+        a.verdict = AssociationVerdict::kAnomaly;
+      } else {
+        const auto candidates = map.findByText(instance.text, options.level);
+        const map::Landmark* landmark = nullptr;
+        for (const auto* l : candidates) {
+          // Several levels share a text: the one nearest the prediction (or the first).
+          if (!landmark ||
+              (is_tracking && (l->position.head<2>() - ekf.pose().translation()).norm() <
+                                  (landmark->position.head<2>() - ekf.pose().translation()).norm()))
+            landmark = l;
+        }
+        if (!landmark) {
+          a.verdict = AssociationVerdict::kNotInMap;
+        } else {
+          a.landmark_id = landmark->id;
+          LandmarkObservation o;
+          o.camera = static_cast<int>(c);
+          o.landmark_id = landmark->id;
+          o.pixels = toEigen(instance.polygon);
+          o.map_corners = floors.cornersAboveFloor(*landmark);
+          o.tag = tag;
+          a.verdict = AssociationVerdict::kAccepted;
+          if (is_tracking) {
+            const auto gate =
+                gateObservation(rig.cameras[c], o, ekf.pose(), ekf.covariance(), gate_options);
+            if (!gate) {
+              a.verdict = AssociationVerdict::kGated;
+            } else {
+              a.mahalanobis2 = gate->mahalanobis2;
+              if (!gate->reading_order_agrees)
+                a.verdict = AssociationVerdict::kFlipped;
+              else if (gate->mahalanobis2 > options.gate_chi2)
+                a.verdict = AssociationVerdict::kGated;
+            }
+          }
+          if (a.verdict == AssociationVerdict::kAccepted) inside.push_back(o);
+          if (a.verdict == AssociationVerdict::kGated) outside.push_back(o);
+        }
+      }
+      result.associations.push_back(std::move(a));
+    }
+  }
+  inside = selectForModules(std::move(inside));
+  outside = selectForModules(std::move(outside));
+  result.timings.association_ms += msSince(t_assoc);
+
+  // 5./6. Measurement and filter.
+  if (options.paper_mode)
+    measurePaper(inside, result);
+  else
+    measureParkloc(inside, outside, result);
+
+  result.timings.total_ms = msSince(t_start);
+  return result;
+}
 
 Pipeline::Pipeline(geometry::Rig rig, map::HdMap map, PipelineOptions options,
                    ocr::TextSpotter* spotter)
-    : impl_(std::make_unique<Impl>(Impl{std::move(rig), std::move(map), options, spotter})) {}
+    : impl_(std::make_unique<Impl>(std::move(rig), std::move(map), options, spotter)) {}
 Pipeline::~Pipeline() = default;
 Pipeline::Pipeline(Pipeline&&) noexcept = default;
 Pipeline& Pipeline::operator=(Pipeline&&) noexcept = default;
 
-FrameResult Pipeline::process(const FrameInput& frame) {
-  FrameResult result;
-  result.timestamp = frame.timestamp;
-  result.warnings.push_back("pipeline not implemented yet");
-  return result;
-}
-
-void Pipeline::reset() {}
+FrameResult Pipeline::process(const FrameInput& frame) { return impl_->process(frame); }
+void Pipeline::reset() { impl_->reset(); }
 const PipelineOptions& Pipeline::options() const { return impl_->options; }
 const geometry::Rig& Pipeline::rig() const { return impl_->rig; }
 const map::HdMap& Pipeline::map() const { return impl_->map; }

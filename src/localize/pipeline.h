@@ -92,6 +92,22 @@ struct PipelineOptions {
   double lost_position_sigma_m = 2.0;   // 1-sigma position beyond which the filter is lost
   int reinit_after_rejected_fixes = 3;  // consecutive solver fixes outside the gate -> re-init
 
+  // Added after the first version (additive).
+  // A solver fix is fused only within this squared Mahalanobis distance of the prediction
+  // (3 dof; 16.3 = 99.9 %); fixes beyond count towards re-initialisation.
+  double fix_gate_chi2 = 16.3;
+  // An observation whose mean corner error is above this is an outlier of the solve.
+  double inlier_threshold_px = 10.0;
+  // The solver's covariance assumes independent corner noise; OCR polygon errors are
+  // correlated over corners and frames, so the EKF sees it inflated by this factor.
+  double fix_covariance_inflation = 4.0;
+  // AFM escape: after this many rejections in a row the queue is refilled (0 = never,
+  // the paper's literal rule; see BoxPlotFilterOptions).
+  int afm_reset_after_rejections = 30;
+  // Odometry older than this (seconds) at a frame is a gap: warned about, and the rest of
+  // the interval is predicted as a random walk.
+  double odometry_gap_s = 0.5;
+
   // Map-guided regions.
   double roi_radius_m = 12.0;    // map landmarks within this radius of the prediction
   double roi_margin_px = 12.0;   // grown by the pose uncertainty, plus this margin
@@ -101,7 +117,8 @@ struct PipelineOptions {
   // solver fix initialises.
   std::optional<geometry::Pose2> initial_pose;
 
-  // The paper's pipeline with the given module switches.
+  // The paper's pipeline: paper_mode on, no odometry, full-frame spotting every frame,
+  // parking numbers only.
   static PipelineOptions paper();
 };
 

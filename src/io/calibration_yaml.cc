@@ -16,6 +16,19 @@ namespace {
 // fewer digits by other tools, tight enough to catch a scaled or sheared rotation.
 constexpr double kOrthonormalTolerance = 1e-6;
 
+// OpenCV 4.6 reports YAML syntax errors as "<file>(<line>): <problem>" in cv::Exception::func
+// (and a bare function name in err); turn that into "line N: problem".
+std::string describeParseError(const cv::Exception& e, const std::string& path) {
+  const std::string& where = e.func;
+  if (where.rfind(path + "(", 0) == 0) {
+    const size_t close = where.find("): ", path.size());
+    if (close != std::string::npos)
+      return fmt::format("line {}: {}", where.substr(path.size() + 1, close - path.size() - 1),
+                         where.substr(close + 3));
+  }
+  return e.err;
+}
+
 class CalibReader {
  public:
   explicit CalibReader(std::string path) : path_(std::move(path)) {}
@@ -41,7 +54,10 @@ class CalibReader {
     require(parent, camera, field, node);
     if (!node.isReal() && !node.isInt()) fail(camera, field, "expected a number");
     const double value = node.real();
-    if (!std::isfinite(value)) fail(camera, field, fmt::format("non-finite value {}", value));
+    if (!std::isfinite(value))
+      fail(
+          camera, field,
+          fmt::format("non-finite value {}", std::isnan(value) ? "nan" : fmt::format("{}", value)));
     return value;
   }
 
@@ -75,7 +91,10 @@ class CalibReader {
       for (int c = 0; c < cols; ++c)
         if (!std::isfinite(m.at<double>(r, c)))
           fail(camera, field,
-               fmt::format("non-finite value {} at ({}, {})", m.at<double>(r, c), r, c));
+               fmt::format(
+                   "non-finite value {} at ({}, {})",
+                   std::isnan(m.at<double>(r, c)) ? "nan" : fmt::format("{}", m.at<double>(r, c)),
+                   r, c));
     return m;
   }
 
@@ -142,7 +161,7 @@ class CalibReader {
       if (!fs.open(path_, cv::FileStorage::READ | cv::FileStorage::FORMAT_YAML))
         fail("cannot open or parse the file");
     } catch (const cv::Exception& e) {
-      fail(fmt::format("cannot parse YAML ({})", e.err));
+      fail("cannot parse YAML: " + describeParseError(e, path_));
     }
     geometry::Rig rig;
     const cv::FileNode cameras = fs["cameras"];
@@ -178,7 +197,8 @@ geometry::Rig loadCalibration(const std::string& path) {
     throw;
   } catch (const cv::Exception& e) {
     // FileStorage may throw from deep inside on malformed content.
-    throw InputError(fmt::format("calib {}: cannot parse YAML ({})", path, e.err));
+    throw InputError(
+        fmt::format("calib {}: cannot parse YAML: {}", path, describeParseError(e, path)));
   } catch (const std::exception& e) {
     // OpenCV 4.6's YAML parser can even throw std::length_error on garbage.
     throw InputError(fmt::format("calib {}: cannot parse YAML ({})", path, e.what()));

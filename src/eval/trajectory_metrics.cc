@@ -80,6 +80,13 @@ TrajectoryError trajectoryError(const std::vector<io::StampedPose>& estimate,
   return e;
 }
 
+TrajectoryError errorFromFrames(std::vector<FrameError> frames) {
+  TrajectoryError e;
+  e.frames = std::move(frames);
+  summarizeFrames(e);
+  return e;
+}
+
 TrajectoryError subsetError(const TrajectoryError& all, const std::vector<bool>& keep) {
   TrajectoryError e;
   e.estimated_poses = all.estimated_poses;

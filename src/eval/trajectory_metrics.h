@@ -44,6 +44,9 @@ TrajectoryError trajectoryError(const std::vector<io::StampedPose>& estimate,
                                 const std::vector<io::StampedPose>& truth,
                                 const TrajectoryErrorOptions& options = {});
 
+// Statistics of already associated frames (e.g. several drives put together).
+TrajectoryError errorFromFrames(std::vector<FrameError> frames);
+
 // The statistics of an arbitrary subset of frames (e.g. a condition of Table 8).
 TrajectoryError subsetError(const TrajectoryError& all, const std::vector<bool>& keep);
 

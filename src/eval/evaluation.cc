@@ -1,0 +1,504 @@
+#include "eval/evaluation.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <set>
+
+#include "eval/conditions.h"
+#include "eval/dead_reckoning.h"
+#include "eval/tables.h"
+#include "io/sequence.h"
+#include "localize/oracle_source.h"
+
+namespace parkloc::eval {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::vector<std::string> mapLexicon(const map::HdMap& map) {
+  std::set<std::string> texts;
+  for (const map::Landmark& l : map.landmarks()) texts.insert(l.text);
+  return {texts.begin(), texts.end()};
+}
+
+Quad labelQuad(const io::LabelInstance& l) {
+  Quad q;
+  for (size_t i = 0; i < 4; ++i) {
+    q[i] = cv::Point2f(static_cast<float>(l.polygon[i].x()), static_cast<float>(l.polygon[i].y()));
+  }
+  return q;
+}
+
+// Per detection: +1 read correctly (matched to a label with the same text), 0 wrong
+// (unmatched, or matched and misread), -1 unknown (on a don't-care region).
+std::vector<int> detectionCorrectness(const io::ImageLabels& labels,
+                                      const std::vector<ocr::TextInstance>& detections,
+                                      const OcrEvaluationOptions& options) {
+  std::vector<Quad> truths, found;
+  std::vector<bool> dont_care;
+  for (const auto& l : labels.instances) {
+    truths.push_back(labelQuad(l));
+    dont_care.push_back(l.occluded_fraction >= options.dont_care_occlusion);
+  }
+  for (const auto& d : detections) found.push_back(d.polygon);
+  const ImageMatching m = matchDetections(truths, dont_care, found, options.matching);
+  std::vector<int> out(detections.size(), 0);
+  for (const MatchedPair& p : m.matches) {
+    out[p.detection] = detections[p.detection].text == labels.instances[p.truth].text ? 1 : 0;
+  }
+  for (size_t d : m.ignored_detections) out[d] = -1;
+  return out;
+}
+
+// Rotation subsets of the parking numbers a camera sees clearly in this frame.
+void addRotationTags(const io::ImageLabels& labels, double dont_care_occlusion,
+                     std::set<std::string>& tags) {
+  for (const auto& l : labels.instances) {
+    if (l.cls != map::TextClass::kParkingNumber || l.occluded_fraction >= dont_care_occlusion)
+      continue;
+    if (const auto rot = rotationSubset(l.rotation_deg)) tags.insert(*rot);
+  }
+}
+
+enum class Source { kSpotter, kSharedFullFrame, kOracle, kOdometry };
+
+struct VariantSpec {
+  std::string key, title;
+  Source source = Source::kSpotter;
+  localize::PipelineOptions options;
+  bool afm = false, mcrp = false, mcap = false;
+  bool ablation = false;
+};
+
+// What one variant accumulates over all sequences.
+struct VariantTally {
+  VariantSpec spec;
+  std::vector<FrameError> frames;
+  std::vector<std::set<std::string>> frame_tags;
+  std::vector<FrameTiming> timings;
+  size_t frames_total = 0, frames_with_pose = 0, after_fix = 0, with_pose_after_fix = 0;
+};
+
+// One variant's state within a sequence.
+struct VariantRun {
+  VariantTally* tally = nullptr;
+  std::unique_ptr<localize::Pipeline> pipeline;
+  std::unique_ptr<DeadReckoning> dead_reckoning;
+  std::vector<io::StampedPose> estimate;
+  std::set<std::string> levels;  // levels of the landmarks it used (for the map plot)
+  bool fixed = false;
+};
+
+std::vector<VariantSpec> variantSpecs(const EvaluationOptions& o, bool have_spotter) {
+  std::vector<VariantSpec> specs;
+  if (o.parkloc && have_spotter) {
+    specs.push_back({"parkloc", "parkloc (full pipeline)", Source::kSpotter, o.parkloc_options});
+  }
+  if (o.paper_ablation && have_spotter) {
+    // The paper's Table 10 row order.
+    const bool rows[8][3] = {{false, false, false}, {true, false, false}, {true, true, false},
+                             {true, false, true},   {false, true, false}, {false, false, true},
+                             {false, true, true},   {true, true, true}};
+    for (const auto& r : rows) {
+      VariantSpec s;
+      s.afm = r[0], s.mcrp = r[1], s.mcap = r[2];
+      s.ablation = true;
+      s.key = fmt::format("paper_afm{}_mcrp{}_mcap{}", int(s.afm), int(s.mcrp), int(s.mcap));
+      s.title = s.afm && s.mcrp && s.mcap
+                    ? "OCR-RTPS (paper pipeline)"
+                    : fmt::format("OCR-RTPS AFM {} MCRP {} MCAP {}", s.afm ? "on" : "off",
+                                  s.mcrp ? "on" : "off", s.mcap ? "on" : "off");
+      s.source = Source::kSharedFullFrame;
+      s.options = localize::PipelineOptions::paper();
+      s.options.afm = s.afm, s.options.mcrp = s.mcrp, s.options.mcap = s.mcap;
+      specs.push_back(s);
+    }
+  }
+  if (o.oracle) {
+    specs.push_back({"oracle", "parkloc on ground-truth text (oracle OCR)", Source::kOracle,
+                     o.parkloc_options});
+  }
+  if (o.odometry_only) {
+    specs.push_back({"odometry_only", "odometry-only dead reckoning", Source::kOdometry, {}});
+  }
+  return specs;
+}
+
+VariantResult toResult(const VariantTally& t) {
+  VariantResult r;
+  r.key = t.spec.key;
+  r.title = t.spec.title;
+  r.error = errorFromFrames(t.frames);
+  r.latency = latencyReport(t.timings);
+  r.frames = t.frames_total;
+  r.frames_with_pose = t.frames_with_pose;
+  r.frames_after_first_fix = t.after_fix;
+  r.frames_with_pose_after_first_fix = t.with_pose_after_fix;
+  return r;
+}
+
+std::map<std::string, TrajectoryError> conditionErrors(const VariantTally& t) {
+  std::map<std::string, TrajectoryError> out;
+  for (const std::string& name : conditionNames()) {
+    std::vector<FrameError> frames;
+    for (size_t i = 0; i < t.frames.size(); ++i) {
+      if (t.frame_tags[i].count(name)) frames.push_back(t.frames[i]);
+    }
+    if (!frames.empty()) out[name] = errorFromFrames(frames);
+  }
+  return out;
+}
+
+// The odometry samples in (after, until].
+std::vector<io::OdometrySample> odometrySlice(const std::vector<io::OdometrySample>& all,
+                                              double after, double until) {
+  std::vector<io::OdometrySample> out;
+  auto it = std::upper_bound(all.begin(), all.end(), after,
+                             [](double t, const io::OdometrySample& s) { return t < s.timestamp; });
+  for (; it != all.end() && it->timestamp <= until; ++it) out.push_back(*it);
+  return out;
+}
+
+std::optional<geometry::Pose2> truthAt(const std::vector<io::StampedPose>& truth, double t,
+                                       double max_difference = 0.01) {
+  const io::StampedPose* best = nullptr;
+  for (const auto& p : truth) {
+    if (std::fabs(p.timestamp - t) <= max_difference &&
+        (!best || std::fabs(p.timestamp - t) < std::fabs(best->timestamp - t))) {
+      best = &p;
+    }
+  }
+  if (!best) return std::nullopt;
+  return geometry::Pose2::fromRigid3(best->pose);
+}
+
+TrajectoryView makeView(const io::Sequence& seq, const VariantRun& run, double t0, double t1) {
+  TrajectoryView v;
+  v.name =
+      std::filesystem::path(seq.dir()).filename().string() + " (" + run.tally->spec.title + ")";
+  for (const auto& p : seq.groundTruth()) {
+    if (p.timestamp < t0 - 1e-6 || p.timestamp > t1 + 1e-6) continue;
+    v.truth_x.push_back(p.pose.translation().x());
+    v.truth_y.push_back(p.pose.translation().y());
+  }
+  for (const auto& p : run.estimate) {
+    v.estimate_x.push_back(p.pose.translation().x());
+    v.estimate_y.push_back(p.pose.translation().y());
+  }
+  for (const map::Landmark& l : seq.map().landmarks()) {
+    if (!run.levels.empty() && !run.levels.count(l.level)) continue;
+    v.landmark_x.push_back(l.position.x());
+    v.landmark_y.push_back(l.position.y());
+    v.landmark_text.push_back(l.cls == map::TextClass::kParkingNumber ? l.text : "");
+  }
+  return v;
+}
+
+}  // namespace
+
+OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSpotter& spotter,
+                          const OcrRunOptions& options) {
+  OcrEvaluator evaluator(options.metrics);
+  for (size_t s = 0; s < sequences.size(); ++s) {
+    const io::Sequence seq(sequences[s]);
+    const std::vector<std::string> conditions =
+        sequenceConditions(seq.metaJson(), seq.dir() + "/meta.json");
+    ocr::SpotRequest request;
+    if (options.use_lexicon) request.lexicon = mapLexicon(seq.map());
+    size_t frames = seq.timestamps().size();
+    if (options.max_frames_per_sequence) frames = std::min(frames, options.max_frames_per_sequence);
+    const std::string stage = fmt::format("sequence {}/{} {}", s + 1, sequences.size(),
+                                          std::filesystem::path(seq.dir()).filename().string());
+    for (size_t i = 0; i < frames; ++i) {
+      for (const std::string& camera : seq.cameras()) {
+        const std::optional<io::ImageLabels> labels = seq.loadLabels(i, camera);
+        if (!labels) continue;  // no ground truth: nothing to score
+        const cv::Mat image = seq.loadImage(i, camera);
+        if (image.empty()) continue;
+        const auto start = Clock::now();
+        const std::vector<ocr::TextInstance> found = spotter.spot(image, request);
+        evaluator.add(*labels, found, conditions, msSince(start) / 1000.0);
+      }
+      if (options.progress) options.progress({stage, i + 1, frames});
+    }
+  }
+  return evaluator.result();
+}
+
+EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
+                                   ocr::TextSpotter* spotter, const EvaluationOptions& options) {
+  std::vector<VariantTally> tallies;
+  for (const VariantSpec& spec : variantSpecs(options, spotter != nullptr)) {
+    tallies.push_back({spec, {}, {}, {}, 0, 0, 0, 0});
+  }
+  const bool shared_ocr = std::any_of(tallies.begin(), tallies.end(), [](const VariantTally& t) {
+    return t.spec.source == Source::kSharedFullFrame;
+  });
+  OcrEvaluator ocr_evaluator(options.ocr_metrics);
+  AnomalyFilterCounts afm_counts;
+  std::vector<TrajectoryView> views;
+  const std::string main_key = spotter && options.parkloc ? "parkloc" : "oracle";
+
+  for (size_t s = 0; s < sequences.size(); ++s) {
+    const io::Sequence seq(sequences[s]);
+    const std::string name = std::filesystem::path(seq.dir()).filename().string();
+    const std::vector<std::string> conditions =
+        sequenceConditions(seq.metaJson(), seq.dir() + "/meta.json");
+    ocr::SpotRequest full_frame;
+    full_frame.lexicon = mapLexicon(seq.map());
+    size_t frames = seq.timestamps().size();
+    if (options.max_frames_per_sequence) frames = std::min(frames, options.max_frames_per_sequence);
+    if (frames == 0) continue;
+    const double t0 = seq.timestamps().front(), t1 = seq.timestamps()[frames - 1];
+
+    std::vector<VariantRun> runs;
+    for (VariantTally& tally : tallies) {
+      VariantRun run;
+      run.tally = &tally;
+      if (tally.spec.source == Source::kOdometry) {
+        const auto start = truthAt(seq.groundTruth(), t0);
+        if (!start) continue;  // no ground truth to start from
+        run.dead_reckoning = std::make_unique<DeadReckoning>(*start, t0);
+      } else {
+        run.pipeline = std::make_unique<localize::Pipeline>(
+            seq.rig(), seq.map(), tally.spec.options,
+            tally.spec.source == Source::kSpotter ? spotter : nullptr);
+      }
+      runs.push_back(std::move(run));
+    }
+    const VariantRun* paper_full = nullptr;
+    for (const VariantRun& r : runs) {
+      if (r.tally->spec.ablation && r.tally->spec.afm && r.tally->spec.mcrp && r.tally->spec.mcap)
+        paper_full = &r;
+    }
+
+    double previous_time = -std::numeric_limits<double>::infinity();
+    const std::string stage = fmt::format("sequence {}/{} {}", s + 1, sequences.size(), name);
+    std::vector<std::set<std::string>> tags_by_frame;
+    for (size_t i = 0; i < frames; ++i) {
+      const double t = seq.timestamps()[i];
+      const std::vector<io::OdometrySample> odometry =
+          odometrySlice(seq.odometry(), previous_time, t);
+      previous_time = t;
+
+      // Read every camera once; spot the full frame once for all paper variants.
+      struct CameraData {
+        std::string name;
+        cv::Mat image;
+        std::optional<io::ImageLabels> labels;
+        std::vector<ocr::TextInstance> full_frame;
+        std::vector<int> correctness;
+      };
+      std::vector<CameraData> cameras;
+      std::set<std::string> tags(conditions.begin(), conditions.end());
+      double shared_ocr_ms = 0.0;
+      for (const std::string& camera : seq.cameras()) {
+        CameraData c;
+        c.name = camera;
+        c.labels = seq.loadLabels(i, camera);
+        if (c.labels) addRotationTags(*c.labels, options.ocr_metrics.dont_care_occlusion, tags);
+        if (spotter) c.image = seq.loadImage(i, camera);
+        if (shared_ocr && !c.image.empty()) {
+          const auto start = Clock::now();
+          c.full_frame = spotter->spot(c.image, full_frame);
+          const double ms = msSince(start);
+          shared_ocr_ms += ms;
+          if (c.labels) {
+            ocr_evaluator.add(*c.labels, c.full_frame, conditions, ms / 1000.0);
+            c.correctness = detectionCorrectness(*c.labels, c.full_frame, options.ocr_metrics);
+          }
+        }
+        cameras.push_back(std::move(c));
+      }
+      tags_by_frame.push_back(tags);
+
+      for (VariantRun& run : runs) {
+        VariantTally& tally = *run.tally;
+        ++tally.frames_total;
+        if (run.dead_reckoning) {
+          const auto start = Clock::now();
+          run.dead_reckoning->advance(odometry, t);
+          tally.timings.push_back({msSince(start), {{"dead_reckoning", msSince(start)}}});
+          run.estimate.push_back({t, run.dead_reckoning->pose().toRigid3()});
+          ++tally.frames_with_pose;
+          ++tally.after_fix;
+          ++tally.with_pose_after_fix;
+          continue;
+        }
+        localize::FrameInput input;
+        input.timestamp = t;
+        input.odometry = odometry;
+        for (const CameraData& c : cameras) {
+          localize::CameraInput in;
+          in.camera = c.name;
+          switch (tally.spec.source) {
+            case Source::kSpotter:
+              in.image = c.image;
+              break;
+            case Source::kSharedFullFrame:
+              in.instances = c.full_frame;
+              break;
+            case Source::kOracle:
+              in.instances = c.labels ? localize::oracleInstances(*c.labels)
+                                      : std::vector<ocr::TextInstance>{};
+              break;
+            case Source::kOdometry:
+              break;
+          }
+          input.cameras.push_back(std::move(in));
+        }
+        const auto start = Clock::now();
+        const localize::FrameResult result = run.pipeline->process(input);
+        double total_ms = msSince(start);
+        const localize::StageTimings& st = result.timings;
+        FrameTiming timing;
+        timing.stage_ms = {{"roi", st.roi_ms},
+                           {"spotting", st.spotting_ms},
+                           {"association", st.association_ms},
+                           {"solver", st.solver_ms},
+                           {"filter", st.filter_ms}};
+        if (tally.spec.source == Source::kSharedFullFrame) {
+          // The shared OCR ran outside the pipeline; it belongs to this variant's latency.
+          timing.stage_ms["spotting"] += shared_ocr_ms;
+          total_ms += shared_ocr_ms;
+        }
+        if (tally.spec.source == Source::kOracle) timing.stage_ms.erase("spotting");
+        timing.total_ms = total_ms;
+        tally.timings.push_back(timing);
+
+        if (result.has_pose) {
+          run.fixed = true;
+          ++tally.frames_with_pose;
+          run.estimate.push_back({t, result.pose.toRigid3()});
+        }
+        if (run.fixed) {
+          ++tally.after_fix;
+          tally.with_pose_after_fix += result.has_pose;
+        }
+        for (const localize::Association& a : result.associations) {
+          if (a.verdict != localize::AssociationVerdict::kAccepted || a.landmark_id.empty())
+            continue;
+          if (const map::Landmark* l = seq.map().findById(a.landmark_id))
+            run.levels.insert(l->level);
+        }
+
+        // Table 3's anomaly filter figures, from the paper pipeline with every module on.
+        if (&run == paper_full) {
+          for (const localize::Association& a : result.associations) {
+            const auto cam = std::find_if(cameras.begin(), cameras.end(),
+                                          [&](const CameraData& c) { return c.name == a.camera; });
+            if (cam == cameras.end() || a.instance_index < 0 ||
+                static_cast<size_t>(a.instance_index) >= cam->correctness.size())
+              continue;
+            using V = localize::AssociationVerdict;
+            if (a.verdict != V::kAccepted && a.verdict != V::kNotInMap && a.verdict != V::kAnomaly)
+              continue;
+            const int correct = cam->correctness[static_cast<size_t>(a.instance_index)];
+            if (correct < 0) continue;
+            ++afm_counts.readings;
+            if (a.verdict == V::kAccepted) {
+              ++afm_counts.kept;
+              afm_counts.kept_correct += correct;
+            }
+            if (!correct) {
+              ++afm_counts.anomalies;
+              afm_counts.anomalies_rejected += a.verdict != V::kAccepted;
+            }
+          }
+        }
+      }
+      if (options.progress) options.progress({stage, i + 1, frames});
+    }
+
+    // Errors of this drive, each frame tagged with its conditions.
+    for (VariantRun& run : runs) {
+      const TrajectoryError e = trajectoryError(run.estimate, seq.groundTruth());
+      for (const FrameError& f : e.frames) {
+        const auto it = std::lower_bound(seq.timestamps().begin(),
+                                         seq.timestamps().begin() + static_cast<long>(frames),
+                                         f.timestamp - 0.01);
+        const size_t index =
+            std::min(frames - 1, static_cast<size_t>(it - seq.timestamps().begin()));
+        run.tally->frames.push_back(f);
+        run.tally->frame_tags.push_back(tags_by_frame[index]);
+      }
+      if (run.tally->spec.key == main_key && views.size() < options.trajectory_views) {
+        views.push_back(makeView(seq, run, t0, t1));
+      }
+    }
+  }
+
+  // Results and tables.
+  EvaluationReport report;
+  report.title = options.title;
+  report.dataset = options.dataset;
+  report.command = options.command;
+  report.trajectories = views;
+  std::map<std::string, const VariantTally*> by_key;
+  for (const VariantTally& t : tallies) by_key[t.spec.key] = &t;
+  auto result = [&](const std::string& key) -> std::optional<VariantResult> {
+    const auto it = by_key.find(key);
+    if (it == by_key.end()) return std::nullopt;
+    return toResult(*it->second);
+  };
+  if (auto main = result(main_key)) report.main = *main;
+  const std::string paper_key = "paper_afm1_mcrp1_mcap1";
+  if (shared_ocr) {
+    report.ocr = ocr_evaluator.result();
+    report.tables.push_back(table3(ocr_evaluator.result(), afm_counts));
+    report.tables.push_back(table3Conditions(ocr_evaluator.result()));
+  }
+  {
+    std::vector<AblationRow> rows;
+    std::vector<VariantResult> extra;
+    for (const VariantTally& t : tallies) {
+      if (t.spec.ablation) rows.push_back({t.spec.afm, t.spec.mcrp, t.spec.mcap, toResult(t)});
+    }
+    for (const char* key : {"parkloc", "oracle"}) {
+      if (auto r = result(key)) extra.push_back(*r);
+    }
+    report.tables.push_back(table10(rows, extra));
+  }
+  {
+    std::vector<std::pair<std::string, std::map<std::string, TrajectoryError>>> per_variant;
+    for (const std::string& key : {std::string("parkloc"), paper_key, std::string("oracle")}) {
+      const auto it = by_key.find(key);
+      if (it != by_key.end())
+        per_variant.emplace_back(it->second->spec.title, conditionErrors(*it->second));
+    }
+    report.tables.push_back(table8(per_variant));
+  }
+  {
+    std::vector<VariantResult> rows;
+    for (const std::string& key :
+         {std::string("parkloc"), paper_key, std::string("odometry_only"), std::string("oracle")}) {
+      if (auto r = result(key)) rows.push_back(*r);
+    }
+    report.tables.push_back(table5(rows));
+  }
+  report.notes.push_back(fmt::format(
+      "{} sequences, {} frame sets. Position error: evo-style APE (translation, no alignment, "
+      "association by timestamp within 10 ms) over frames with a pose.",
+      sequences.size(), report.main.frames));
+  if (shared_ocr) {
+    report.notes.push_back(
+        "Paper-pipeline variants share one full-frame OCR pass per image; its time is "
+        "counted in each variant's latency.");
+  }
+  if (!spotter) {
+    report.notes.push_back("No text spotter: only the oracle and odometry-only variants ran.");
+  }
+  return report;
+}
+
+}  // namespace parkloc::eval

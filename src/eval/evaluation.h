@@ -1,0 +1,55 @@
+#pragma once
+// Runs the localization pipeline and the text spotter over the sequences of a dataset split
+// and measures what the paper's tables report. Every frame set is read once and fed to all
+// configurations in lockstep; full-frame OCR runs once per image and its instances are
+// shared by the eight paper-pipeline variants of the ablation (Table 10).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "eval/ocr_metrics.h"
+#include "eval/report.h"
+#include "localize/pipeline.h"
+#include "ocr/text_spotter.h"
+
+namespace parkloc::eval {
+
+struct Progress {
+  std::string stage;  // e.g. "sequence 2/5 test_garage_b1_tour"
+  size_t done = 0;    // frame sets done in this stage
+  size_t total = 0;
+};
+using ProgressCallback = std::function<void(const Progress&)>;
+
+struct OcrRunOptions {
+  OcrEvaluationOptions metrics;
+  size_t max_frames_per_sequence = 0;  // 0: all
+  bool use_lexicon = true;             // decode against the map's texts
+  ProgressCallback progress;
+};
+
+// Table 3 of the paper: full-frame spotting of every labelled camera image.
+OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSpotter& spotter,
+                          const OcrRunOptions& options = {});
+
+struct EvaluationOptions {
+  bool parkloc = true;         // the full pipeline, spotting itself (map-guided); needs a spotter
+  bool paper_ablation = true;  // the 8 AFM / MCRP / MCAP variants; needs a spotter
+  bool oracle = true;          // the full pipeline on ground-truth text boxes
+  bool odometry_only = true;   // dead reckoning from the true first pose
+  size_t max_frames_per_sequence = 0;         // 0: all
+  size_t trajectory_views = 2;                // drives drawn in the report
+  localize::PipelineOptions parkloc_options;  // for parkloc and the oracle
+  OcrEvaluationOptions ocr_metrics;
+  ProgressCallback progress;
+  std::string title = "parkloc evaluation";
+  std::string dataset;  // shown in the report
+  std::string command;
+};
+
+// Without a spotter only the oracle and odometry-only variants run. The report's main
+// variant is parkloc when it ran, else the oracle. Throws InputError for a bad sequence.
+EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
+                                   ocr::TextSpotter* spotter, const EvaluationOptions& options);
+
+}  // namespace parkloc::eval

@@ -1,0 +1,117 @@
+#include "eval/evaluation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+
+#include "common/error.h"
+#include "eval/dataset.h"
+#include "io/calibration_yaml.h"
+#include "io/map_geojson.h"
+#include "io/odometry_csv.h"
+#include "io/sequence.h"
+#include "io/tum.h"
+
+namespace parkloc::eval {
+namespace {
+namespace fs = std::filesystem;
+
+// A tiny drive on a circle (radius 5 m, 1 m/s) with exact odometry, tiny blank images and
+// no labels: enough for the runner's plumbing and the odometry-only variant.
+std::string writeSequence(const std::string& root, const std::string& name) {
+  const fs::path dir = fs::path(root) / "sequences" / name;
+  fs::create_directories(dir);
+  const geometry::Rig rig = geometry::defaultRig();
+  io::saveCalibration(rig, (dir / "calib.yaml").string());
+  map::Landmark l;
+  l.id = "B1-001";
+  l.text = "001";
+  l.level = "B1";
+  l.width = 0.8;
+  l.height = 0.45;
+  io::saveMap(map::HdMap({l}, "test"), (dir / "map.geojson").string());
+  std::vector<io::StampedPose> poses;
+  std::vector<io::OdometrySample> odometry;
+  for (int i = 0; i <= 200; ++i) {
+    const double t = i * 0.02;
+    odometry.push_back({t, 1.0, 0.2});
+  }
+  const cv::Mat blank(8, 8, CV_8UC3, cv::Scalar(40, 40, 40));
+  for (int i = 0; i < 20; ++i) {
+    const double t = i * 0.2, a = 0.2 * t;
+    poses.push_back({t, geometry::Pose2(5.0 * std::sin(a), 5.0 - 5.0 * std::cos(a), a).toRigid3()});
+    for (const auto& camera : rig.cameras) {
+      fs::create_directories(dir / "images" / camera.name);
+      cv::imwrite((dir / "images" / camera.name / (io::timestampStem(t) + ".png")).string(), blank);
+    }
+  }
+  io::saveTum(poses, (dir / "poses.tum").string());
+  io::saveOdometry(odometry, (dir / "odometry.csv").string());
+  std::ofstream(dir / "meta.json") << R"({"condition": "weak", "split": "test"})";
+  return dir.string();
+}
+
+class EvaluationTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = testing::TempDir() + "/parkloc_eval_dataset";
+    fs::remove_all(root_);
+    writeSequence(root_, "seq_a");
+    std::ofstream(root_ + "/splits.json") << R"({"train": [], "test": ["seq_a"]})";
+  }
+  std::string root_;
+};
+
+TEST_F(EvaluationTest, SplitListsTheSequenceFolders) {
+  const auto test = splitSequences(root_, "test");
+  ASSERT_EQ(test.size(), 1u);
+  EXPECT_EQ(fs::path(test[0]).filename(), "seq_a");
+  EXPECT_TRUE(splitSequences(root_, "train").empty());
+  // A sequence folder stands for itself.
+  EXPECT_EQ(splitSequences(test[0], "test"), test);
+}
+
+TEST_F(EvaluationTest, BadSplitsAreInputErrorsNamingTheProblem) {
+  try {
+    splitSequences(root_, "validation");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("validation"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("splits.json"), std::string::npos);
+  }
+  std::ofstream(root_ + "/splits.json") << R"({"test": ["missing_seq"]})";
+  EXPECT_THROW(splitSequences(root_, "test"), InputError);
+  EXPECT_THROW(splitSequences(root_ + "/nowhere", "test"), InputError);
+}
+
+TEST_F(EvaluationTest, OdometryOnlyOnExactOdometryTracksTheTruth) {
+  EvaluationOptions options;
+  options.oracle = false;
+  size_t progress_calls = 0;
+  options.progress = [&](const Progress& p) {
+    ++progress_calls;
+    EXPECT_LE(p.done, p.total);
+  };
+  const EvaluationReport r = evaluateSequences(splitSequences(root_, "test"), nullptr, options);
+  EXPECT_EQ(progress_calls, 20u);
+  // Without a spotter and the oracle, the tables still exist but the main variant is empty.
+  const nlohmann::json j = resultsJson(r);
+  const auto& t5 = j["tables"]["table5"]["rows"];
+  ASSERT_EQ(t5.size(), 1u);
+  EXPECT_EQ(t5[0][0], "odometry-only dead reckoning");
+  EXPECT_LT(t5[0][1].get<double>(), 0.1);  // cm: exact odometry on an exact circle
+}
+
+TEST_F(EvaluationTest, WithoutASpotterTheOracleIsTheMainVariant) {
+  EvaluationOptions options;
+  options.odometry_only = false;
+  const EvaluationReport r = evaluateSequences(splitSequences(root_, "test"), nullptr, options);
+  EXPECT_EQ(r.main.key, "oracle");
+  EXPECT_EQ(r.main.frames, 20u);
+}
+
+}  // namespace
+}  // namespace parkloc::eval

@@ -134,10 +134,12 @@ SolverResult refinePose(const geometry::Rig& rig, const std::vector<LandmarkObse
     const geometry::Pose2 candidate = applyStep(result.pose, step);
     const NormalEquations next = accumulate(rig, obs, use, candidate, options.huber_threshold_px);
     if (next.corners >= current.corners && next.cost <= current.cost) {
+      const double decrease = current.cost - next.cost;
       result.pose = candidate;
       current = next;
       lambda = std::max(lambda * 0.1, 1e-10);
-      if (step.cwiseAbs().sum() < options.step_tolerance) {
+      if (step.cwiseAbs().sum() < options.step_tolerance ||
+          decrease <= 1e-12 * std::max(current.cost, 1e-300)) {
         result.converged = true;
         break;
       }
@@ -188,7 +190,20 @@ SolverResult solvePose(const geometry::Rig& rig, const std::vector<LandmarkObser
 
   std::vector<geometry::Pose2> hypotheses;
   if (prior) hypotheses.push_back(*prior);
-  for (size_t o = 0; o < obs.size(); ++o) {
+  // Hypotheses from the observations that look largest (nearest: the best single-text
+  // poses); a handful suffices as every one of them sees the whole pose.
+  std::vector<size_t> order(obs.size());
+  for (size_t o = 0; o < obs.size(); ++o) order[o] = o;
+  const auto area = [&](size_t o) {
+    const auto& q = obs[o].pixels;
+    double a = 0.0;
+    for (int i = 0; i < 4; ++i) a += q[i].x() * q[(i + 1) % 4].y() - q[i].y() * q[(i + 1) % 4].x();
+    return std::abs(a);
+  };
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return area(a) > area(b); });
+  if (order.size() > static_cast<size_t>(options.max_hypotheses))
+    order.resize(static_cast<size_t>(options.max_hypotheses));
+  for (const size_t o : order) {
     const auto pose = poseFromObservation(rig.cameras[obs[o].camera], obs[o]);
     if (!pose) continue;
     // Polish on its own observation so that far texts (poor ground casting) score fairly.

@@ -23,9 +23,11 @@ struct SolverOptions {
   double pixel_sigma = 1.5;         // corner noise (1 sigma, pixels) for the covariance
   double huber_threshold_px = 3.0;  // Huber IRLS threshold on a corner's pixel error
   int max_iterations = 20;
-  double step_tolerance = 1e-9;  // converged when |dx| + |dy| + |dyaw| falls below
+  double step_tolerance = 1e-8;  // converged when |dx| + |dy| + |dyaw| falls below
+  // (or when a step lowers the cost by less than 1e-12 of it)
   // Hypothesis scoring: an observation is an inlier when its mean corner error is below.
   double inlier_threshold_px = 10.0;
+  int max_hypotheses = 8;  // single-text hypotheses tried by solvePose (the largest texts)
 };
 
 struct SolverResult {

@@ -6,6 +6,14 @@
 #include "common/error.h"
 
 namespace parkloc::map {
+namespace {
+// Packs two cell indices into one key. Shifts on unsigned values: left-shifting a negative
+// signed value is undefined behaviour (UBSan flags it for cells at negative coordinates).
+long long packCell(long long ix, long long iy) {
+  return static_cast<long long>((static_cast<unsigned long long>(ix) << 32) ^
+                                (static_cast<unsigned long long>(iy) & 0xffffffffULL));
+}
+}  // namespace
 
 HdMap::HdMap(std::vector<Landmark> landmarks, std::string name)
     : name_(std::move(name)), landmarks_(std::move(landmarks)) {
@@ -57,7 +65,7 @@ const Landmark* HdMap::findById(const std::string& id) const {
 HdMap::CellKey HdMap::cellOf(const Eigen::Vector2d& p) const {
   const long long ix = static_cast<long long>(std::floor(p.x() / cell_size_));
   const long long iy = static_cast<long long>(std::floor(p.y() / cell_size_));
-  return (ix << 32) ^ (iy & 0xffffffffLL);
+  return packCell(ix, iy);
 }
 
 std::vector<const Landmark*> HdMap::withinRadius(const Eigen::Vector2d& center, double radius,
@@ -70,7 +78,7 @@ std::vector<const Landmark*> HdMap::withinRadius(const Eigen::Vector2d& center, 
   const long long y1 = static_cast<long long>(std::floor((center.y() + radius) / cell_size_));
   for (long long ix = x0; ix <= x1; ++ix) {
     for (long long iy = y0; iy <= y1; ++iy) {
-      const auto it = grid_.find((ix << 32) ^ (iy & 0xffffffffLL));
+      const auto it = grid_.find(packCell(ix, iy));
       if (it == grid_.end()) continue;
       for (const size_t i : it->second) {
         const Landmark& l = landmarks_[i];

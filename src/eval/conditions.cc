@@ -101,9 +101,9 @@ std::vector<std::string> sequenceConditions(const std::string& meta_json,
 
 std::optional<std::string> rotationSubset(double rotation_deg) {
   double a = std::fabs(std::remainder(rotation_deg, 360.0));  // [0, 180]
-  if (std::fabs(a - 45.0) <= 22.5) return "rot45";
-  if (std::fabs(a - 90.0) < 22.5) return "rot90";
-  if (a >= 157.5) return "rot180";
+  if (a >= 30.0 && a < 60.0) return "rot45";
+  if (a >= 60.0 && a <= 120.0) return "rot90";
+  if (a >= 150.0) return "rot180";
   return std::nullopt;
 }
 

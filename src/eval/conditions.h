@@ -23,8 +23,9 @@ std::string conditionTitle(const std::string& name);  // "weak_light" -> "Weak l
 std::vector<std::string> sequenceConditions(const std::string& meta_json,
                                             const std::string& source_name = "meta.json");
 
-// The rotation subset of a text whose reading direction is at `rotation_deg` in the image:
-// within 22.5 degrees of 45, 90 or 180 (either sign), else none.
+// The rotation subset of a text whose reading direction is at `rotation_deg` in the image,
+// with the simulator's bins (sim/dataset_writer.h): |rotation| in [30, 60) is "rot45",
+// [60, 120] "rot90", [150, 180] "rot180", anything else none.
 std::optional<std::string> rotationSubset(double rotation_deg);
 
 }  // namespace parkloc::eval

@@ -119,6 +119,17 @@ TableCell TableCell::percent(double fraction) {
   return c;
 }
 
+nlohmann::json ocrEvaluationJson(const OcrEvaluation& ocr) {
+  nlohmann::json o = countsJson(ocr.overall);
+  o["images"] = ocr.images;
+  o["images_per_second"] = ocr.imagesPerSecond();
+  o["by_class"] = nlohmann::json::object();
+  o["by_condition"] = nlohmann::json::object();
+  for (const auto& [cls, c] : ocr.by_class) o["by_class"][cls] = countsJson(c);
+  for (const auto& [name, c] : ocr.by_condition) o["by_condition"][name] = countsJson(c);
+  return o;
+}
+
 nlohmann::json resultsJson(const EvaluationReport& r) {
   const VariantResult& m = r.main;
   nlohmann::json j;
@@ -138,12 +149,7 @@ nlohmann::json resultsJson(const EvaluationReport& r) {
   for (const auto& [stage, s] : m.latency.stage_ms) latency["stages"][stage] = summaryJson(s, 1.0);
   j["latency_ms"] = latency;
   if (r.ocr) {
-    nlohmann::json o = countsJson(r.ocr->overall);
-    o["images"] = r.ocr->images;
-    o["images_per_second"] = r.ocr->imagesPerSecond();
-    for (const auto& [cls, c] : r.ocr->by_class) o["by_class"][cls] = countsJson(c);
-    for (const auto& [name, c] : r.ocr->by_condition) o["by_condition"][name] = countsJson(c);
-    j["ocr"] = o;
+    j["ocr"] = ocrEvaluationJson(*r.ocr);
   } else {
     j["ocr"] = nlohmann::json::object();
   }

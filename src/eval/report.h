@@ -63,6 +63,8 @@ struct EvaluationReport {
   std::vector<std::string> notes;  // shown under the tables (definitions, caveats)
 };
 
+// Every OCR count and rate, overall, per class and per condition.
+nlohmann::json ocrEvaluationJson(const OcrEvaluation& ocr);
 nlohmann::json resultsJson(const EvaluationReport& report);
 std::string resultsMarkdown(const EvaluationReport& report);
 std::string reportHtml(const EvaluationReport& report);

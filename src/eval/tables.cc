@@ -80,8 +80,8 @@ Table table3Conditions(const OcrEvaluation& ocr) {
   t.key = "table3_conditions";
   t.title = "Table 3 by condition: text spotting per subset";
   t.caption =
-      "Light and blur per sequence; rotation per instance (reading direction within "
-      "22.5 degrees of 45, 90 or 180 degrees in the image).";
+      "Light and blur per sequence; rotation per instance (|reading direction| in the "
+      "image within 30-60, 60-120 or 150-180 degrees).";
   t.header = {"Subset",        "Instances", "Detection TP",      "Detection FP",
               "F-measure",     "Mean IoU",  "Recognition (raw)", "Recognition (lexicon)",
               "Classification"};

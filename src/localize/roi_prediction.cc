@@ -8,33 +8,29 @@
 
 namespace parkloc::localize {
 
-std::array<Eigen::Vector2d, 4> growQuad(const std::array<Eigen::Vector2d, 4>& quad,
-                                        double distance) {
-  const Eigen::Vector2d centre = 0.25 * (quad[0] + quad[1] + quad[2] + quad[3]);
-  std::array<Eigen::Vector2d, 4> normals;
-  for (int i = 0; i < 4; ++i) {
-    const Eigen::Vector2d edge = quad[(i + 1) % 4] - quad[i];
-    Eigen::Vector2d n(edge.y(), -edge.x());
-    const double length = n.norm();
-    if (length < 1e-12) {
-      normals[i] = Eigen::Vector2d::Zero();
-      continue;
-    }
-    n /= length;
-    if (n.dot(0.5 * (quad[i] + quad[(i + 1) % 4]) - centre) < 0.0) n = -n;
-    normals[i] = n;
+std::array<Eigen::Vector2d, 4> readingAlignedBox(const std::array<Eigen::Vector2d, 4>& quad,
+                                                 double margin) {
+  Eigen::Vector2d along = 0.5 * (quad[1] + quad[2] - quad[0] - quad[3]);
+  if (along.norm() < 1e-9) along = Eigen::Vector2d::UnitX();
+  along.normalize();
+  // Towards the top of the glyphs: the image's "up" for upright text (y grows downwards),
+  // flipped when the quad's own top edge says otherwise.
+  Eigen::Vector2d up(along.y(), -along.x());
+  const Eigen::Vector2d quad_up = 0.5 * (quad[0] + quad[1] - quad[2] - quad[3]);
+  if (quad_up.dot(up) < 0.0) up = -up;
+  double lo_a = 1e300, hi_a = -1e300, lo_u = 1e300, hi_u = -1e300;
+  for (const auto& p : quad) {
+    lo_a = std::min(lo_a, p.dot(along));
+    hi_a = std::max(hi_a, p.dot(along));
+    lo_u = std::min(lo_u, p.dot(up));
+    hi_u = std::max(hi_u, p.dot(up));
   }
-  std::array<Eigen::Vector2d, 4> out;
-  for (int i = 0; i < 4; ++i) {
-    const Eigen::Vector2d& a = normals[(i + 3) % 4];  // edge ending at corner i
-    const Eigen::Vector2d& b = normals[i];            // edge starting at corner i
-    const double denominator = 1.0 + a.dot(b);
-    // Mitre: the corner moves so that both edges move by `distance`; capped for sharp ones.
-    const Eigen::Vector2d mitre =
-        denominator > 0.25 ? Eigen::Vector2d((a + b) / denominator) : Eigen::Vector2d(a + b);
-    out[i] = quad[i] + distance * mitre;
-  }
-  return out;
+  lo_a -= margin;
+  hi_a += margin;
+  lo_u -= margin;
+  hi_u += margin;
+  return {lo_a * along + hi_u * up, hi_a * along + hi_u * up, hi_a * along + lo_u * up,
+          lo_a * along + lo_u * up};
 }
 
 std::vector<ocr::RegionOfInterest> predictRegions(const geometry::RigCamera& camera,
@@ -72,16 +68,9 @@ std::vector<ocr::RegionOfInterest> predictRegions(const geometry::RigCamera& cam
     if (longest < options.min_size_px) continue;
     const double grow = options.margin_px + options.sigma_scale * grow_sigma;
     if (grow > options.max_grow_px) continue;
-    // A polygon seen edge-on (pillar text from the side) may fold; skip it.
-    const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-      return a.x() * b.y() - a.y() * b.x();
-    };
-    double area = 0.0;
-    for (int i = 0; i < 4; ++i) area += 0.5 * cross(quad[i], quad[(i + 1) % 4]);
-    if (std::abs(area) < 1.0) continue;
 
     ocr::RegionOfInterest roi;
-    const auto grown = growQuad(quad, grow);
+    const auto grown = readingAlignedBox(quad, grow);
     for (int i = 0; i < 4; ++i)
       roi.polygon[i] =
           cv::Point2f(static_cast<float>(grown[i].x()), static_cast<float>(grown[i].y()));

@@ -29,8 +29,10 @@ std::vector<ocr::RegionOfInterest> predictRegions(const geometry::RigCamera& cam
                                                   const Eigen::Matrix3d& covariance,
                                                   const RoiOptions& options = {});
 
-// A convex quadrilateral offset outwards by `distance` pixels (mitred corners).
-std::array<Eigen::Vector2d, 4> growQuad(const std::array<Eigen::Vector2d, 4>& quad,
-                                        double distance);
+// The rectangle aligned with a text quad's reading direction that holds the quad, grown
+// by `margin` pixels on every side; corners in reading order (top-left first). Robust to
+// the folded, near-degenerate quads of text seen almost edge-on.
+std::array<Eigen::Vector2d, 4> readingAlignedBox(const std::array<Eigen::Vector2d, 4>& quad,
+                                                 double margin);
 
 }  // namespace parkloc::localize

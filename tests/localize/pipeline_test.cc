@@ -1,0 +1,342 @@
+#include "localize/pipeline.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <random>
+
+#include "localize/box_plot_filter.h"
+#include "synthetic_scene.h"
+
+namespace parkloc::localize {
+namespace {
+
+constexpr double kFrameRate = 10.0;
+
+// A drive down the aisle at 2 m/s with a gentle weave; `jump` moves the true vehicle
+// forward by `jump_m` at `jump_time` without the odometry noticing (kidnapping).
+struct Drive {
+  double jump_time = 1e9;
+  double jump_m = 0.0;
+
+  geometry::Pose2 truth(double t) const {
+    const double x = 2.0 * t + (t >= jump_time ? jump_m : 0.0);
+    const double y = 0.3 * std::sin(0.4 * t);
+    const double yaw = std::atan2(0.12 * std::cos(0.4 * t), 2.0);
+    return {x, y, yaw};
+  }
+  io::OdometrySample odometry(double t) const {
+    const double h = 1e-4;
+    const auto a = truth(t - h), b = truth(t + h);
+    io::OdometrySample s;
+    s.timestamp = t;
+    s.speed = (b.translation() - a.translation()).norm() / (2 * h);
+    s.yaw_rate = geometry::wrapAngle(b.yaw - a.yaw) / (2 * h);
+    if (t >= jump_time - h && t < jump_time + h) s.speed = 2.0;  // the jump is not driven
+    return s;
+  }
+};
+
+class PipelineTest : public ::testing::Test {
+ protected:
+  geometry::Rig rig = geometry::defaultRig();
+  map::HdMap map = testing::aisleMap();
+  std::mt19937 rng{21};
+  testing::SpotOptions spot;
+
+  PipelineTest() { spot.max_range_m = 10.0; }
+
+  // Frame k of a drive, with oracle instances (plus what `edit` does to them).
+  FrameInput frame(const Drive& drive, int k,
+                   const std::function<void(std::vector<CameraInput>&)>& edit = {}) {
+    FrameInput in;
+    in.timestamp = k / kFrameRate;
+    for (const auto& camera : rig.cameras) {
+      CameraInput c;
+      c.camera = camera.name;
+      c.instances = testing::spotExactly(camera, map, drive.truth(in.timestamp), spot, &rng);
+      in.cameras.push_back(std::move(c));
+    }
+    // Odometry at 50 Hz in (previous frame, this frame].
+    for (int j = 1; j <= 5; ++j)
+      in.odometry.push_back(drive.odometry(in.timestamp - 0.1 + j * 0.02));
+    if (edit) edit(in.cameras);
+    return in;
+  }
+
+  static double positionError(const FrameResult& r, const geometry::Pose2& truth) {
+    return (r.pose.translation() - truth.translation()).norm();
+  }
+};
+
+TEST_F(PipelineTest, TracksADriveWithNoisyOracleDetections) {
+  spot.pixel_noise = 0.5;
+  Pipeline pipeline(rig, map);
+  Drive drive;
+  double sum = 0.0, worst = 0.0, yaw_sum = 0.0;
+  int frames = 0;
+  for (int k = 0; k < 60; ++k) {
+    const auto r = pipeline.process(frame(drive, k));
+    ASSERT_TRUE(r.has_pose) << "frame " << k;  // the first frame already sees numbers
+    EXPECT_EQ(r.status, TrackingStatus::kOk);
+    const double e = positionError(r, drive.truth(r.timestamp));
+    sum += e;
+    worst = std::max(worst, e);
+    yaw_sum += std::abs(geometry::wrapAngle(r.pose.yaw - drive.truth(r.timestamp).yaw));
+    ++frames;
+    EXPECT_GT(r.covariance(0, 0), 0.0);
+    EXPECT_GE(r.timings.total_ms, 0.0);
+  }
+  EXPECT_LT(sum / frames, 0.01);
+  EXPECT_LT(worst, 0.03);
+  EXPECT_LT(yaw_sum / frames, 0.1 * M_PI / 180);
+}
+
+TEST_F(PipelineTest, DeadReckonsWithGrowingCovarianceWhenNothingIsSeen) {
+  Pipeline pipeline(rig, map);
+  Drive drive;
+  double previous_sigma = 0.0;
+  for (int k = 0; k < 50; ++k) {
+    const bool blind = k >= 20 && k < 40;
+    const auto r = pipeline.process(frame(drive, k, [&](std::vector<CameraInput>& cameras) {
+      if (blind)
+        for (auto& c : cameras) c.instances->clear();
+    }));
+    ASSERT_TRUE(r.has_pose);
+    if (blind) {
+      EXPECT_EQ(r.status, TrackingStatus::kDeadReckoning) << "frame " << k;
+      EXPECT_GT(r.covariance(1, 1), previous_sigma);
+      EXPECT_LT(positionError(r, drive.truth(r.timestamp)), 0.2);
+    } else {
+      EXPECT_EQ(r.status, TrackingStatus::kOk) << "frame " << k;
+    }
+    previous_sigma = r.covariance(1, 1);
+  }
+}
+
+// The first instance of the first camera that sees a parking number, or null.
+ocr::TextInstance* firstParkingNumber(std::vector<CameraInput>& cameras) {
+  for (auto& c : cameras)
+    for (auto& t : *c.instances)
+      if (t.cls == map::TextClass::kParkingNumber) return &t;
+  return nullptr;
+}
+
+TEST_F(PipelineTest, RejectsAFalseNumberAtTheWrongPlaceANumberNotInTheMapAndAFlippedReading) {
+  // Without the AFM, which would already drop a number this far off the recent ones: the
+  // gate must catch it on its own.
+  PipelineOptions options;
+  options.afm = false;
+  Pipeline pipeline(rig, map, options);
+  Drive drive;
+  for (int k = 0; k < 20; ++k) pipeline.process(frame(drive, k));
+  // Three extra instances: copies of a real one with a wrong text (in the map, in the
+  // AFM's range, 20 m away), a text not in the map, and the real text with the polygon
+  // turned by 180 degrees (reading order reversed).
+  std::string real_text;
+  const auto r = pipeline.process(frame(drive, 20, [&](std::vector<CameraInput>& cameras) {
+    auto* real = firstParkingNumber(cameras);
+    ASSERT_NE(real, nullptr);
+    real_text = real->text;
+    const auto* landmark = map.findByText(real->text).front();
+    const auto far =
+        map.withinRadius(landmark->position.head<2>() + Eigen::Vector2d(20.0, 0.0), 1.5);
+    ASSERT_FALSE(far.empty());
+    ocr::TextInstance wrong = *real, unknown = *real, flipped = *real;
+    wrong.text = far.front()->text;
+    // In the AFM's range (same number), but no such text in the map.
+    unknown.text = "C7-" + std::to_string(*parkingNumberValue(real->text));
+    flipped.polygon = {real->polygon[2], real->polygon[3], real->polygon[0], real->polygon[1]};
+    cameras.front().instances->push_back(wrong);
+    cameras.front().instances->push_back(unknown);
+    cameras.front().instances->push_back(flipped);
+  }));
+  ASSERT_EQ(r.status, TrackingStatus::kOk);
+  int gated = 0, not_in_map = 0, flipped = 0, accepted = 0;
+  for (const auto& a : r.associations) {
+    if (a.verdict == AssociationVerdict::kGated) ++gated;
+    if (a.verdict == AssociationVerdict::kNotInMap) ++not_in_map;
+    if (a.verdict == AssociationVerdict::kFlipped) {
+      ++flipped;
+      EXPECT_EQ(a.text, real_text);
+    }
+    if (a.verdict == AssociationVerdict::kAccepted) ++accepted;
+  }
+  EXPECT_EQ(gated, 1);
+  EXPECT_EQ(not_in_map, 1);
+  EXPECT_EQ(flipped, 1);
+  EXPECT_GT(accepted, 2);
+  EXPECT_LT(positionError(r, drive.truth(r.timestamp)), 0.02);
+}
+
+TEST_F(PipelineTest, TheAnomalyFilterDropsANumberFarFromTheRecentOnes) {
+  Pipeline pipeline(rig, map);
+  Drive drive;
+  for (int k = 0; k < 20; ++k) pipeline.process(frame(drive, k));
+  const auto r = pipeline.process(frame(drive, 20, [&](std::vector<CameraInput>& cameras) {
+    auto* real = firstParkingNumber(cameras);
+    ASSERT_NE(real, nullptr);
+    ocr::TextInstance wrong = *real;
+    wrong.text = "B2-164";  // in the map, at its far end
+    cameras.front().instances->push_back(wrong);
+  }));
+  int anomalies = 0;
+  for (const auto& a : r.associations) anomalies += a.verdict == AssociationVerdict::kAnomaly;
+  EXPECT_EQ(anomalies, 1);
+}
+
+TEST_F(PipelineTest, AFlippedReadingAmongOthersDoesNotTurnTheFirstFix) {
+  Pipeline pipeline(rig, map);
+  Drive drive;
+  const auto r = pipeline.process(frame(drive, 0, [&](std::vector<CameraInput>& cameras) {
+    auto* real = firstParkingNumber(cameras);
+    ASSERT_NE(real, nullptr);
+    real->polygon = {real->polygon[2], real->polygon[3], real->polygon[0], real->polygon[1]};
+  }));
+  ASSERT_TRUE(r.has_pose);
+  EXPECT_LT(positionError(r, drive.truth(0.0)), 0.01);
+  int outliers = 0;
+  for (const auto& a : r.associations) outliers += a.verdict == AssociationVerdict::kSolverOutlier;
+  EXPECT_EQ(outliers, 1);
+}
+
+TEST_F(PipelineTest, RecoversFromKidnappingWithinThreeSeconds) {
+  Pipeline pipeline(rig, map);
+  Drive drive;
+  drive.jump_time = 4.0;
+  drive.jump_m = 15.0;
+  bool reinitialised = false;
+  double recovered_at = -1.0;
+  for (int k = 0; k < 100; ++k) {
+    const auto r = pipeline.process(frame(drive, k));
+    ASSERT_TRUE(r.has_pose);
+    reinitialised = reinitialised || (r.reinitialised && r.timestamp >= drive.jump_time);
+    const double e = positionError(r, drive.truth(r.timestamp));
+    if (r.timestamp >= drive.jump_time && recovered_at < 0.0 && e < 0.05)
+      recovered_at = r.timestamp;
+    if (recovered_at >= 0.0) EXPECT_LT(e, 0.05) << "at " << r.timestamp;
+  }
+  EXPECT_TRUE(reinitialised);
+  ASSERT_GE(recovered_at, 0.0);
+  EXPECT_LE(recovered_at - drive.jump_time, 3.0);
+}
+
+TEST_F(PipelineTest, PaperModeGivesAPositionFromCentresAndHomography) {
+  Pipeline pipeline(rig, map, PipelineOptions::paper());
+  Drive drive;
+  double sum = 0.0;
+  int n = 0;
+  for (int k = 0; k < 40; ++k) {
+    const auto r = pipeline.process(frame(drive, k));
+    ASSERT_TRUE(r.has_pose);
+    sum += positionError(r, drive.truth(r.timestamp));
+    ++n;
+    for (const auto& a : r.associations) EXPECT_NE(a.verdict, AssociationVerdict::kGated);
+  }
+  // The centre of a distorted polygon is not the image of the text's centre: decimetres.
+  EXPECT_LT(sum / n, 0.3);
+}
+
+TEST_F(PipelineTest, AblationSwitchesChangeWhatIsUsed) {
+  Drive drive;
+  PipelineOptions single = PipelineOptions::paper();
+  single.mcap = false;
+  single.mcrp = false;
+  PipelineOptions all = PipelineOptions::paper();
+  Pipeline a(rig, map, single), b(rig, map, all);
+  const auto in = frame(drive, 10);
+  const auto ra = a.process(in), rb = b.process(in);
+  ASSERT_TRUE(ra.has_pose && rb.has_pose);
+  EXPECT_GT((ra.pose.translation() - rb.pose.translation()).norm(), 1e-6);
+}
+
+TEST_F(PipelineTest, BadInputIsReportedAndTheRestIsUsed) {
+  Pipeline pipeline(rig, map);
+  Drive drive;
+  for (int k = 0; k < 5; ++k) pipeline.process(frame(drive, k));
+  // A missing camera, a corrupt one (no image, no instances), an unknown camera and a NaN
+  // odometry sample.
+  auto in = frame(drive, 5);
+  in.cameras.erase(in.cameras.begin());
+  in.cameras.front().instances.reset();
+  in.cameras.push_back(CameraInput{"roof", cv::Mat(), std::nullopt});
+  in.odometry.push_back({0.55, std::nan(""), 0.0});
+  const auto r = pipeline.process(in);
+  EXPECT_EQ(r.status, TrackingStatus::kOk);
+  EXPECT_LT(positionError(r, drive.truth(r.timestamp)), 0.02);
+  std::string all;
+  for (const auto& w : r.warnings) all += w + "\n";
+  EXPECT_NE(all.find("'front': no input"), std::string::npos) << all;
+  EXPECT_NE(all.find("missing or corrupt"), std::string::npos) << all;
+  EXPECT_NE(all.find("'roof' is not in the rig"), std::string::npos) << all;
+  EXPECT_NE(all.find("not finite"), std::string::npos) << all;
+  // A frame from the past: processed, reported, no prediction.
+  const auto old = pipeline.process(frame(drive, 3));
+  bool reported = false;
+  for (const auto& w : old.warnings)
+    reported = reported || w.find("not after") != std::string::npos;
+  EXPECT_TRUE(reported);
+  EXPECT_TRUE(old.has_pose);
+}
+
+// A spotter that sees exactly what the synthetic scene shows, inside the requested regions.
+class SceneSpotter : public ocr::TextSpotter {
+ public:
+  SceneSpotter(const geometry::Rig& rig, const map::HdMap& map) : rig_(rig), map_(map) {}
+  std::string name() const override { return "scene"; }
+  std::vector<ocr::TextInstance> spot(const cv::Mat& image,
+                                      const ocr::SpotRequest& request) override {
+    requests.push_back(request);
+    const auto& camera = rig_.cameras[static_cast<size_t>(image.at<cv::Vec3b>(0, 0)[0])];
+    auto all = testing::spotExactly(camera, map_, pose, {});
+    if (request.regions.empty()) return all;
+    std::vector<ocr::TextInstance> out;
+    for (const auto& t : all)
+      for (const auto& r : request.regions)
+        if (r.expected_texts.front() == t.text) out.push_back(t);
+    return out;
+  }
+  geometry::Pose2 pose;
+  std::vector<ocr::SpotRequest> requests;
+
+ private:
+  const geometry::Rig& rig_;
+  const map::HdMap& map_;
+};
+
+TEST_F(PipelineTest, MapGuidedSpottingAsksForPredictedRegionsAndFullFramesNowAndThen) {
+  SceneSpotter spotter(rig, map);
+  PipelineOptions options;
+  options.full_frame_interval = 5;
+  Pipeline pipeline(rig, map, options, &spotter);
+  Drive drive;
+  int guided_frames = 0, full_frames = 0;
+  for (int k = 0; k < 20; ++k) {
+    FrameInput in = frame(drive, k);
+    for (size_t c = 0; c < in.cameras.size(); ++c) {
+      in.cameras[c].instances.reset();
+      in.cameras[c].image = cv::Mat(4, 4, CV_8UC3, cv::Scalar(static_cast<double>(c), 0, 0));
+    }
+    spotter.pose = drive.truth(in.timestamp);
+    spotter.requests.clear();
+    const auto r = pipeline.process(in);
+    ASSERT_TRUE(r.has_pose);
+    EXPECT_LT(positionError(r, spotter.pose), 0.01);
+    if (r.cameras.front().full_frame) {
+      ++full_frames;
+      for (const auto& q : spotter.requests) EXPECT_TRUE(q.regions.empty());
+    } else {
+      ++guided_frames;
+      int regions = 0;
+      for (const auto& c : r.cameras) regions += c.regions;
+      EXPECT_GT(regions, 3);
+      for (const auto& q : spotter.requests)
+        for (const auto& region : q.regions) EXPECT_EQ(region.expected_texts.size(), 1u);
+    }
+  }
+  EXPECT_EQ(full_frames, 4);  // frames 0 (not initialised), 5, 10 and 15
+  EXPECT_EQ(guided_frames, 16);
+}
+
+}  // namespace
+}  // namespace parkloc::localize

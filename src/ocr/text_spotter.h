@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/rig.h"
 #include "map/landmark.h"
 
 namespace parkloc::ocr {
@@ -36,6 +37,9 @@ struct SpotRequest {
   std::vector<std::string> lexicon;
   // When non-empty, spot only inside these regions instead of the full frame.
   std::vector<RegionOfInterest> regions;
+  // The camera that took the image, when known (not owned): engines may use its
+  // calibration, e.g. to fit floor text corners on the ground plane.
+  const geometry::RigCamera* camera = nullptr;
 };
 
 class TextSpotter {

@@ -1,0 +1,86 @@
+// parkloc ocr IMAGE... : spot text in camera images with the PP-OCRv4 engine.
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "apps/parkloc/command.h"
+#include "common/error.h"
+#include "io/map_geojson.h"
+#include "ocr/ocr_io.h"
+#include "ocr/ppocr/pp_ocr_spotter.h"
+
+namespace {
+
+struct OcrArgs {
+  std::vector<std::string> images;
+  bool json = false;
+  std::string draw;
+  std::string lexicon;
+  std::string map;
+  std::string models = PARKLOC_MODEL_DIR;
+  std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
+  int det_side = 960;
+  std::string direction = "classifier";
+  bool no_refine = false;
+};
+
+void run(const OcrArgs& args) {
+  using namespace parkloc;
+  ocr::PpOcrOptions options;
+  options.models = ocr::PpOcrModelPaths::inDirectory(args.models);
+  options.models.classifier = args.classifier;
+  options.detection_max_side = args.det_side;
+  options.direction =
+      args.direction == "both" ? ocr::DirectionMode::kDecodeBoth : ocr::DirectionMode::kClassifier;
+  options.refine_corners = !args.no_refine;
+  ocr::SpotRequest request;
+  if (!args.lexicon.empty()) request.lexicon = ocr::loadLexiconFile(args.lexicon);
+  if (!args.map.empty()) request.lexicon = ocr::lexiconFromMap(io::loadMap(args.map));
+  ocr::PpOcrSpotter spotter(options);
+
+  nlohmann::json all = nlohmann::json::array();
+  for (size_t i = 0; i < args.images.size(); ++i) {
+    const cv::Mat image = ocr::readImage(args.images[i]);
+    const auto instances = spotter.spot(image, request);
+    if (args.json) {
+      all.push_back({{"image", args.images[i]}, {"instances", ocr::toJson(instances)}});
+    } else {
+      std::cout << args.images[i] << ": " << instances.size() << " text instances\n";
+      for (const auto& inst : instances) std::cout << "  " << ocr::describe(inst) << "\n";
+    }
+    if (!args.draw.empty()) {
+      std::string out = args.draw;
+      if (args.images.size() > 1) {
+        const auto dot = out.rfind('.');
+        out = out.substr(0, dot) + "_" + std::to_string(i) + out.substr(dot);
+      }
+      if (!cv::imwrite(out, ocr::drawInstances(image, instances)))
+        throw IoError("cannot write " + out);
+    }
+  }
+  if (args.json) std::cout << all.dump(2) << "\n";
+}
+
+const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
+  auto args = std::make_shared<OcrArgs>();
+  auto* cmd = parent.add_subcommand("ocr", "Spot text (polygon, reading, class) in camera images");
+  cmd->add_option("images", args->images, "Camera images (8-bit colour)")->required();
+  cmd->add_flag("--json", args->json, "Print JSON instead of text");
+  cmd->add_option("--draw", args->draw, "Write the image with instances drawn (PNG)");
+  cmd->add_option("--lexicon", args->lexicon, "Candidate texts, one a line");
+  cmd->add_option("--map", args->map, "Candidate texts from an HD map (GeoJSON)");
+  cmd->add_option("--models", args->models, "Folder with the PP-OCRv4 ONNX models")
+      ->capture_default_str();
+  cmd->add_option("--classifier", args->classifier, "Text classifier (YAML); '' for none")
+      ->capture_default_str();
+  cmd->add_option("--det-side", args->det_side, "Detection input: longer side in pixels")
+      ->capture_default_str();
+  cmd->add_option("--direction", args->direction, "classifier | both")
+      ->check(CLI::IsMember({"classifier", "both"}))
+      ->capture_default_str();
+  cmd->add_flag("--no-refine", args->no_refine, "Keep DB's boxes (no corner re-fit to the ink)");
+  cmd->callback([args] { run(*args); });
+});
+
+}  // namespace

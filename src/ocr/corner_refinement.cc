@@ -1,0 +1,140 @@
+#include "ocr/corner_refinement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "geometry/ground_projection.h"
+
+namespace parkloc::ocr {
+namespace {
+
+struct InkMask {
+  cv::Mat mask;  // 8-bit, 255 where ink, crop coordinates
+  cv::Mat image_from_crop;
+};
+
+std::optional<InkMask> inkMask(const cv::Mat& image, const Quad& detected,
+                               const CornerRefinementOptions& options) {
+  const Quad quad = expandQuad(detected, options.search_expand_x, options.search_expand_y);
+  const int h = options.crop_height;
+  const int w = std::clamp(
+      static_cast<int>(std::lround(quadWidth(quad) / std::max(quadHeight(quad), 1.f) * h)), 8,
+      16 * h);
+  const cv::Mat crop_from_image = rectifyingHomography(quad, w, h);
+  cv::Mat crop, gray;
+  cv::warpPerspective(image, crop, crop_from_image, {w, h}, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  cv::cvtColor(crop, gray, cv::COLOR_BGR2GRAY);
+  cv::Mat binary;
+  const double threshold = cv::threshold(gray, binary, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
+  // Polarity: the crop's border is background (DB's box leaves a margin around the text).
+  cv::Mat border = cv::Mat::ones(h, w, CV_8U) * 255;
+  border(cv::Rect(2, 2, std::max(w - 4, 1), std::max(h - 4, 1))).setTo(0);
+  const double border_mean = cv::mean(gray, border)[0];
+  if (border_mean > threshold) cv::bitwise_not(binary, binary);
+  // Contrast check: ink and background means must differ clearly.
+  const double ink_mean = cv::mean(gray, binary)[0], bg_mean = cv::mean(gray, ~binary)[0];
+  if (std::abs(ink_mean - bg_mean) < 20.0) return std::nullopt;
+
+  // Keep components that do not touch the crop's border (slot lines, neighbours), unless
+  // that leaves nothing.
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(binary, labels, stats, centroids, 8, CV_32S);
+  cv::Mat keep = cv::Mat::zeros(h, w, CV_8U);
+  int kept_area = 0;
+  for (int i = 1; i < n; ++i) {
+    const int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
+    const int cw = stats.at<int>(i, cv::CC_STAT_WIDTH), ch = stats.at<int>(i, cv::CC_STAT_HEIGHT);
+    const int area = stats.at<int>(i, cv::CC_STAT_AREA);
+    const bool touches = x <= 0 || y <= 0 || x + cw >= w || y + ch >= h;
+    if (touches || area < h * h / 400) continue;
+    keep.setTo(255, labels == i);
+    kept_area += area;
+  }
+  if (kept_area < h * h / 20) return std::nullopt;
+  return InkMask{keep, crop_from_image.inv()};
+}
+
+}  // namespace
+
+std::vector<cv::Point2f> inkOutline(const cv::Mat& image, const Quad& quad,
+                                    const CornerRefinementOptions& options) {
+  const auto ink = inkMask(image, quad, options);
+  if (!ink) return {};
+  std::vector<std::vector<cv::Point>> contours;
+  cv::findContours(ink->mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+  std::vector<cv::Point2f> points;
+  for (const auto& c : contours)
+    for (const auto& p : c) points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+  if (points.empty()) return {};
+  std::vector<cv::Point2f> in_image;
+  cv::perspectiveTransform(points, in_image, ink->image_from_crop);
+  return in_image;
+}
+
+std::optional<Quad> refineInCrop(const cv::Mat& image, const Quad& quad,
+                                 const CornerRefinementOptions& options) {
+  const auto ink = inkMask(image, quad, options);
+  if (!ink) return std::nullopt;
+  const cv::Rect box = cv::boundingRect(ink->mask);
+  // Outer pixel edges of the ink box.
+  const float x0 = box.x - 0.5f, y0 = box.y - 0.5f;
+  const float x1 = box.x + box.width - 0.5f, y1 = box.y + box.height - 0.5f;
+  return transformQuad({cv::Point2f(x0, y0), {x1, y0}, {x1, y1}, {x0, y1}}, ink->image_from_crop);
+}
+
+std::optional<Quad> refineOnGround(const cv::Mat& image, const Quad& quad,
+                                   const geometry::RigCamera& camera,
+                                   const CornerRefinementOptions& options) {
+  const auto outline = inkOutline(image, quad, options);
+  if (outline.size() < 4) return std::nullopt;
+  const auto ground = geometry::Plane::ground();
+  auto toGround = [&](const cv::Point2f& p) -> std::optional<cv::Point2f> {
+    const auto g = geometry::pixelToPlane(camera, {p.x, p.y}, ground);
+    if (!g) return std::nullopt;
+    return cv::Point2f(static_cast<float>(g->x()), static_cast<float>(g->y()));
+  };
+  std::vector<cv::Point2f> on_ground;
+  for (const auto& p : outline) {
+    const auto g = toGround(p);
+    if (!g) return std::nullopt;
+    on_ground.push_back(*g);
+  }
+  const cv::RotatedRect rect = cv::minAreaRect(on_ground);
+  const double long_side = std::max(rect.size.width, rect.size.height);
+  const double short_side = std::min(rect.size.width, rect.size.height);
+  if (short_side > options.max_ground_height || long_side > options.max_ground_width)
+    return std::nullopt;
+
+  // Reading direction and "up" on the ground from the image quad's edges.
+  const auto left = toGround((quad[0] + quad[3]) * 0.5f),
+             right = toGround((quad[1] + quad[2]) * 0.5f);
+  const auto top = toGround((quad[0] + quad[1]) * 0.5f),
+             bottom = toGround((quad[2] + quad[3]) * 0.5f);
+  if (!left || !right || !top || !bottom) return std::nullopt;
+  cv::Point2f along = *right - *left, up = *top - *bottom;
+  cv::Point2f axes[2];
+  const double a = rect.angle * CV_PI / 180.0;
+  axes[0] = {static_cast<float>(std::cos(a)), static_cast<float>(std::sin(a))};
+  axes[1] = {-axes[0].y, axes[0].x};
+  float half[2] = {rect.size.width * 0.5f, rect.size.height * 0.5f};
+  // The rectangle axis closer to the image's reading direction is the reading axis.
+  const int r = std::abs(axes[0].dot(along)) >= std::abs(axes[1].dot(along)) ? 0 : 1;
+  cv::Point2f u = axes[r] * (axes[r].dot(along) >= 0 ? 1.f : -1.f);
+  cv::Point2f v = axes[1 - r] * (axes[1 - r].dot(up) >= 0 ? 1.f : -1.f);
+  const float hw = half[r], hh = half[1 - r];
+  const cv::Point2f c = rect.center;
+  const cv::Point2f corners[4] = {c - u * hw + v * hh, c + u * hw + v * hh, c + u * hw - v * hh,
+                                  c - u * hw - v * hh};
+  const geometry::Rigid3 camera_from_vehicle = camera.vehicle_from_camera.inverse();
+  Quad out;
+  for (int k = 0; k < 4; ++k) {
+    const auto px = camera.model.project(camera_from_vehicle *
+                                         Eigen::Vector3d(corners[k].x, corners[k].y, 0.0));
+    if (!px) return std::nullopt;
+    out[k] = cv::Point2f(static_cast<float>(px->x()), static_cast<float>(px->y()));
+  }
+  return out;
+}
+
+}  // namespace parkloc::ocr

@@ -1,0 +1,44 @@
+#pragma once
+// Corner refinement: DB's unclipped box is deliberately loose (the recognizer wants some
+// background) and, being a rectangle in the raw fisheye image, cannot follow perspective or
+// lens distortion. The localization uses the corners, so they are re-fitted to the text's
+// ink:
+//  - on the floor, with the camera known: the ink outline is cast onto the ground plane
+//    (a bird's-eye view, where painted text is an undistorted rectangle), its minimum-area
+//    rectangle is taken there and its corners are projected back into the raw image;
+//  - otherwise: the ink's bounding box in the perspective-rectified crop, mapped back.
+#include <opencv2/core.hpp>
+#include <optional>
+
+#include "geometry/rig.h"
+#include "ocr/quad.h"
+
+namespace parkloc::ocr {
+
+struct CornerRefinementOptions {
+  int crop_height = 64;  // rectified crop used to find the ink
+  // The detected box is grown by these factors before looking for ink in it: DB's boxes
+  // of PP-OCRv4 hug the glyphs and may cut them.
+  float search_expand_x = 1.15f;
+  float search_expand_y = 1.8f;
+  double max_ground_height = 1.2;  // metres; taller text is not floor text
+  double max_ground_width = 6.0;
+};
+
+// Ink outline points (raw image pixels) of the text inside `quad`; empty when no clear ink
+// is found.
+std::vector<cv::Point2f> inkOutline(const cv::Mat& image, const Quad& quad,
+                                    const CornerRefinementOptions& options = {});
+
+// The ink's box in the rectified crop of `quad`, back in the image, reading order kept.
+std::optional<Quad> refineInCrop(const cv::Mat& image, const Quad& quad,
+                                 const CornerRefinementOptions& options = {});
+
+// The ink's minimum-area rectangle on the ground plane (z = 0 of the vehicle frame), its
+// corners projected into the camera's raw image, in the reading order of `quad`. Empty when
+// the text does not fit floor text (above the horizon, too large).
+std::optional<Quad> refineOnGround(const cv::Mat& image, const Quad& quad,
+                                   const geometry::RigCamera& camera,
+                                   const CornerRefinementOptions& options = {});
+
+}  // namespace parkloc::ocr

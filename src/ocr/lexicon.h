@@ -1,0 +1,43 @@
+#pragma once
+// Lexicon decoding: score candidate texts (the map's texts, or those expected in a region)
+// under the recognizer's CTC output and keep the best one only when it explains the crop
+// about as well as the free reading does. A crop that matches nothing is reported as
+// unknown with its raw reading, never forced onto the nearest entry.
+#include <string>
+#include <vector>
+
+#include "ocr/ctc.h"
+
+namespace parkloc::ocr {
+
+struct LexiconOptions {
+  // Accept the best entry when its posterior within {entries, free reading} reaches this.
+  double min_posterior = 0.5;
+  // ... and its mean log probability per character is above this (rejects crops that
+  // are noise for every hypothesis alike).
+  double min_log_prob_per_char = -2.5;
+  // Prior weight of "the text is not in the lexicon" against one for the lexicon as a
+  // whole: the free reading enters the posterior's denominator times this weight. Below 1
+  // because the lexicon holds the texts that are really there.
+  double open_world_weight = 0.2;
+};
+
+struct LexiconDecoding {
+  std::string raw_text;        // greedy reading
+  double raw_log_prob = 0.0;   // CTC forward log probability of raw_text
+  float raw_confidence = 0.f;  // PaddleOCR-style mean best-path confidence
+  int best_index = -1;         // index into the candidates, -1 when none encodes
+  double best_log_prob = 0.0;  // CTC forward log probability of the best candidate
+  // P(best | crop) within the hypothesis set {candidates} plus the free reading (weighted
+  // by open_world_weight) when it is not itself a candidate; an estimate of the
+  // probability that `best` is right.
+  double posterior = 0.0;
+  bool matched = false;
+};
+
+// Candidates whose characters the charset cannot encode are skipped.
+LexiconDecoding decodeWithLexicon(const CtcMatrix& probs, const Charset& charset,
+                                  const std::vector<std::string>& candidates,
+                                  const LexiconOptions& options = {});
+
+}  // namespace parkloc::ocr

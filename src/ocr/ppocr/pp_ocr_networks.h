@@ -1,0 +1,53 @@
+#pragma once
+// The three PaddleOCR networks with their pre-processing: DB text detection, CRNN/SVTR
+// recognition with CTC output, and the 0/180 degree direction classifier.
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "ocr/ctc.h"
+#include "ocr/onnx_model.h"
+
+namespace parkloc::ocr {
+
+// Detection: the probability map of each image of a batch (all the same size, both sides
+// multiples of 32), CV_32F at input resolution.
+class DbDetector {
+ public:
+  DbDetector(const std::string& model_path, const OnnxOptions& options);
+  std::vector<cv::Mat> probability(const std::vector<cv::Mat>& images_bgr) const;
+
+ private:
+  OnnxModel model_;
+};
+
+// Recognition output of one crop: [steps x classes] probabilities.
+struct RecognitionOutput {
+  std::vector<float> probs;
+  int steps = 0;
+  int classes = 0;
+  CtcMatrix matrix() const { return {probs.data(), steps, classes}; }
+};
+
+class CtcRecognizer {
+ public:
+  static constexpr int kHeight = 48;
+  CtcRecognizer(const std::string& model_path, const OnnxOptions& options);
+  // Crops are 8-bit BGR, kHeight rows tall; batched by similar width, padded on the right.
+  std::vector<RecognitionOutput> recognize(const std::vector<cv::Mat>& crops, int batch_size) const;
+
+ private:
+  OnnxModel model_;
+};
+
+class DirectionClassifier {
+ public:
+  DirectionClassifier(const std::string& model_path, const OnnxOptions& options);
+  // Probability that each crop is upside down (180 degrees).
+  std::vector<float> upsideDownProbability(const std::vector<cv::Mat>& crops) const;
+
+ private:
+  OnnxModel model_;
+};
+
+}  // namespace parkloc::ocr

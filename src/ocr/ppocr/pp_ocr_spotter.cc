@@ -1,0 +1,268 @@
+#include "ocr/ppocr/pp_ocr_spotter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <optional>
+
+#include "common/error.h"
+#include "ocr/ppocr/pp_ocr_networks.h"
+
+namespace parkloc::ocr {
+
+PpOcrModelPaths PpOcrModelPaths::inDirectory(const std::string& dir) {
+  PpOcrModelPaths paths;
+  paths.detection = dir + "/ch_PP-OCRv4_det_infer.onnx";
+  paths.recognition = dir + "/ch_PP-OCRv4_rec_infer.onnx";
+  paths.direction = dir + "/ch_ppocr_mobile_v2.0_cls_infer.onnx";
+  paths.dictionary = dir + "/ppocr_keys_v1.txt";
+  return paths;
+}
+
+void requireBgrImage(const cv::Mat& image, const std::string& what) {
+  if (image.empty()) throw InputError(what + ": empty image");
+  if (image.type() != CV_8UC3)
+    throw InputError(what + ": expected an 8-bit 3-channel (BGR) image, got type " +
+                     std::to_string(image.type()) + " with " + std::to_string(image.channels()) +
+                     " channels");
+}
+
+struct PpOcrSpotter::Networks {
+  DbDetector detector;
+  CtcRecognizer recognizer;
+  std::optional<DirectionClassifier> direction;
+  Charset charset;
+  TextClassifier classifier;
+};
+
+namespace {
+
+int roundTo32(double v) { return std::max(32, static_cast<int>(std::lround(v / 32.0)) * 32); }
+
+// One quad to read: where it is, which texts it may be, whether to try it upside down.
+struct ReadJob {
+  Quad quad;
+  float detection_score = 0.f;
+  const std::vector<std::string>* lexicon = nullptr;
+  bool try_both_directions = true;
+};
+
+}  // namespace
+
+PpOcrSpotter::PpOcrSpotter(const PpOcrOptions& options) : options_(options) {
+  const auto& m = options.models;
+  nets_ = std::unique_ptr<Networks>(new Networks{
+      DbDetector(m.detection, options.onnx), CtcRecognizer(m.recognition, options.onnx),
+      std::nullopt, Charset::fromDictionaryFile(m.dictionary), TextClassifier()});
+  if (!m.direction.empty()) nets_->direction.emplace(m.direction, options.onnx);
+  if (!m.classifier.empty()) nets_->classifier = TextClassifier::load(m.classifier);
+}
+
+PpOcrSpotter::~PpOcrSpotter() = default;
+
+std::vector<TextInstance> PpOcrSpotter::spot(const cv::Mat& image, const SpotRequest& request) {
+  requireBgrImage(image);
+  return request.regions.empty() ? spotFullFrame(image, request) : spotRegions(image, request);
+}
+
+namespace {
+
+// Reads every job: rectified crops (and their 180 degree turns where the direction is in
+// doubt) go through the recognizer in batches; each job keeps its better direction.
+// The refined corners when they are plausible: every corner inside the detected box grown
+// by a third.
+Quad refinedCorners(const cv::Mat& image, const Quad& quad, const PpOcrOptions& options,
+                    const geometry::RigCamera* camera) {
+  if (!options.refine_corners) return quad;
+  std::optional<Quad> refined;
+  if (camera != nullptr) refined = refineOnGround(image, quad, *camera, options.refinement);
+  if (!refined) refined = refineInCrop(image, quad, options.refinement);
+  if (!refined) return quad;
+  const Quad limit = expandQuad(quad, 1.3f, 1.5f);
+  std::vector<cv::Point2f> hull(limit.begin(), limit.end());
+  for (const auto& p : *refined)
+    if (cv::pointPolygonTest(hull, p, false) < 0) return quad;
+  return *refined;
+}
+
+std::vector<std::optional<TextInstance>> readJobs(
+    const cv::Mat& image, const std::vector<ReadJob>& jobs, const geometry::RigCamera* camera,
+    const PpOcrOptions& options, const DbDetector&, const CtcRecognizer& recognizer,
+    const DirectionClassifier* direction, const Charset& charset,
+    const TextClassifier& classifier) {
+  std::vector<cv::Mat> upright(jobs.size());
+  for (size_t i = 0; i < jobs.size(); ++i)
+    upright[i] = rectifiedCrop(image, jobs[i].quad, CtcRecognizer::kHeight, 16,
+                               options.recognition_max_width);
+
+  // Which directions to decode, per job: bit 0 upright, bit 1 turned.
+  std::vector<int> directions(jobs.size(), 1);
+  std::vector<float> upside_down(jobs.size(), 0.f);
+  if (options.direction == DirectionMode::kClassifier && direction != nullptr) {
+    std::vector<cv::Mat> ask;
+    std::vector<size_t> asked;
+    for (size_t i = 0; i < jobs.size(); ++i)
+      if (jobs[i].try_both_directions) {
+        ask.push_back(upright[i]);
+        asked.push_back(i);
+      }
+    const auto p = direction->upsideDownProbability(ask);
+    for (size_t k = 0; k < asked.size(); ++k) {
+      const float conf = options.direction_confident;
+      directions[asked[k]] = p[k] >= conf ? 2 : p[k] <= 1.f - conf ? 1 : 3;
+    }
+  } else {
+    for (size_t i = 0; i < jobs.size(); ++i)
+      if (jobs[i].try_both_directions) directions[i] = 3;
+  }
+
+  std::vector<cv::Mat> crops;
+  std::vector<std::pair<size_t, bool>> owner;  // job, turned
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    if (directions[i] & 1) {
+      crops.push_back(upright[i]);
+      owner.emplace_back(i, false);
+    }
+    if (directions[i] & 2) {
+      cv::Mat turned;
+      cv::rotate(upright[i], turned, cv::ROTATE_180);
+      crops.push_back(turned);
+      owner.emplace_back(i, true);
+    }
+  }
+  const auto outputs = recognizer.recognize(crops, options.recognition_batch);
+
+  static const std::vector<std::string> kNoLexicon;
+  struct Best {
+    double score = -std::numeric_limits<double>::infinity();
+    LexiconDecoding decoding;
+    bool turned = false;
+  };
+  std::vector<Best> best(jobs.size());
+  for (size_t k = 0; k < outputs.size(); ++k) {
+    const auto [job, turned] = owner[k];
+    const auto& lexicon = jobs[job].lexicon ? *jobs[job].lexicon : kNoLexicon;
+    LexiconDecoding d = decodeWithLexicon(outputs[k].matrix(), charset, lexicon, options.lexicon);
+    // Both directions share the crop's step count, so their log probabilities compare.
+    const double score = d.matched ? std::max(d.best_log_prob, d.raw_log_prob) : d.raw_log_prob;
+    if (score > best[job].score) best[job] = {score, std::move(d), turned};
+  }
+
+  std::vector<std::optional<TextInstance>> out(jobs.size());
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    const Best& b = best[i];
+    const LexiconDecoding& d = b.decoding;
+    if (!d.matched && (d.raw_text.empty() || d.raw_confidence < options.min_text_confidence))
+      continue;
+    TextInstance inst;
+    inst.polygon = refinedCorners(image, b.turned ? shiftedBy180(jobs[i].quad) : jobs[i].quad,
+                                  options, camera);
+    inst.raw_text = d.raw_text;
+    inst.lexicon_match = d.matched;
+    inst.text = d.matched ? (*jobs[i].lexicon)[d.best_index] : d.raw_text;
+    inst.recognition_score = d.matched ? static_cast<float>(d.posterior) : d.raw_confidence;
+    inst.detection_score = jobs[i].detection_score;
+    const auto [cls, cls_score] = classifier.classify(image, inst.polygon, inst.text);
+    inst.cls = cls;
+    inst.class_score = cls_score;
+    out[i] = std::move(inst);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
+                                                      const SpotRequest& request) {
+  const double scale =
+      std::min(1.0, options_.detection_max_side / double(std::max(image.cols, image.rows)));
+  const int w = roundTo32(image.cols * scale), h = roundTo32(image.rows * scale);
+  cv::Mat resized;
+  cv::resize(image, resized, {w, h}, 0, 0, cv::INTER_AREA);
+  const cv::Mat probability = nets_->detector.probability({resized})[0];
+  const float sx = float(image.cols) / probability.cols, sy = float(image.rows) / probability.rows;
+
+  std::vector<ReadJob> jobs;
+  for (const DbBox& box : dbBoxesFromProbability(probability, options_.db)) {
+    ReadJob job;
+    for (int k = 0; k < 4; ++k)
+      job.quad[k] = {(box.quad[k].x + 0.5f) * sx - 0.5f, (box.quad[k].y + 0.5f) * sy - 0.5f};
+    job.detection_score = box.score;
+    job.lexicon = &request.lexicon;
+    jobs.push_back(job);
+  }
+  auto read =
+      readJobs(image, jobs, request.camera, options_, nets_->detector, nets_->recognizer,
+               nets_->direction ? &*nets_->direction : nullptr, nets_->charset, nets_->classifier);
+  std::vector<TextInstance> out;
+  for (auto& r : read)
+    if (r) out.push_back(std::move(*r));
+  return out;
+}
+
+std::vector<TextInstance> PpOcrSpotter::spotRegions(const cv::Mat& image,
+                                                    const SpotRequest& request) {
+  const cv::Size patch = options_.region_patch;
+  const float aspect = float(patch.width) / patch.height;
+  std::vector<cv::Mat> patches;
+  std::vector<cv::Mat> patch_from_image;
+  std::vector<std::pair<float, float>> text_size_in_patch;  // predicted w, h in patch pixels
+  for (const auto& region : request.regions) {
+    const Quad& q = region.polygon;
+    const float w = std::max(quadWidth(q), 1.f), h = std::max(quadHeight(q), 1.f);
+    // The expanded region keeps the patch's aspect ratio, so the text is not stretched.
+    const float expanded_h =
+        std::max(h * options_.region_expand_y, w * options_.region_expand_x / aspect);
+    const float expanded_w = expanded_h * aspect;
+    const Quad expanded = expandQuad(q, expanded_w / w, expanded_h / h);
+    cv::Mat H = rectifyingHomography(expanded, patch.width, patch.height);
+    cv::Mat p;
+    cv::warpPerspective(image, p, H, patch, cv::INTER_LINEAR, cv::BORDER_CONSTANT);
+    patches.push_back(p);
+    patch_from_image.push_back(H);
+    text_size_in_patch.emplace_back(w / expanded_w * patch.width, h / expanded_h * patch.height);
+  }
+  const auto maps = nets_->detector.probability(patches);
+
+  std::vector<ReadJob> jobs;
+  for (size_t r = 0; r < request.regions.size(); ++r) {
+    // The detected box nearest the patch centre, where the map predicts the text.
+    const cv::Point2f centre(patch.width * 0.5f, patch.height * 0.5f);
+    const auto [tw, th] = text_size_in_patch[r];
+    std::optional<DbBox> chosen;
+    float chosen_cost = 0.f;
+    for (const DbBox& box : dbBoxesFromProbability(maps[r], options_.db)) {
+      const cv::Point2f c = (box.quad[0] + box.quad[1] + box.quad[2] + box.quad[3]) * 0.25f;
+      const float dx = (c.x - centre.x) / std::max(tw, 1.f),
+                  dy = (c.y - centre.y) / std::max(th, 1.f);
+      const float cost = dx * dx + dy * dy;
+      if (std::abs(dx) > 0.75f || std::abs(dy) > 1.f) continue;
+      if (!chosen || cost < chosen_cost) {
+        chosen = box;
+        chosen_cost = cost;
+      }
+    }
+    ReadJob job;
+    job.lexicon = &request.regions[r].expected_texts;
+    job.try_both_directions = false;  // the map predicts the reading direction
+    if (chosen) {
+      job.quad = transformQuad(chosen->quad, patch_from_image[r].inv());
+      job.detection_score = chosen->score;
+    } else {
+      job.quad = request.regions[r].polygon;  // read the prediction itself; score 0
+    }
+    jobs.push_back(job);
+  }
+  auto read =
+      readJobs(image, jobs, request.camera, options_, nets_->detector, nets_->recognizer,
+               nets_->direction ? &*nets_->direction : nullptr, nets_->charset, nets_->classifier);
+  std::vector<TextInstance> out;
+  for (size_t r = 0; r < read.size(); ++r) {
+    // A region where no text was detected counts only when the lexicon vouches for it.
+    if (!read[r] || (jobs[r].detection_score == 0.f && !read[r]->lexicon_match)) continue;
+    out.push_back(std::move(*read[r]));
+  }
+  return out;
+}
+
+}  // namespace parkloc::ocr

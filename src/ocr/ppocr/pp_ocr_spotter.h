@@ -1,0 +1,80 @@
+#pragma once
+// The PaddleOCR PP-OCRv4 engine on ONNX Runtime (paper section 3.2, with PP-OCRv4 mobile in
+// place of ABCNet): DB detection on the raw fisheye image, perspective-rectified crops,
+// CTC recognition in both reading directions, lexicon decoding and the classification head.
+// With SpotRequest::regions, only those regions are processed (map-guided spotting).
+#include <memory>
+#include <string>
+
+#include "ocr/corner_refinement.h"
+#include "ocr/db_postprocess.h"
+#include "ocr/lexicon.h"
+#include "ocr/onnx_model.h"
+#include "ocr/text_classifier.h"
+#include "ocr/text_spotter.h"
+
+namespace parkloc::ocr {
+
+struct PpOcrModelPaths {
+  std::string detection;
+  std::string recognition;
+  std::string direction;  // empty: decide the direction by decoding both
+  std::string dictionary;
+  std::string classifier;  // empty: every instance is TextClass::kOther with score 0
+
+  // The PaddleOCR file names inside `dir` (and no classifier).
+  static PpOcrModelPaths inDirectory(const std::string& dir);
+};
+
+enum class DirectionMode {
+  kDecodeBoth,  // recognize the 0 and 180 degree crops, keep the better reading
+  kClassifier,  // the direction classifier decides; both only when it is unsure
+};
+
+struct PpOcrOptions {
+  PpOcrModelPaths models;
+  OnnxOptions onnx;
+  DbOptions db;
+  // Full-frame detection input: the longer side is scaled to this (multiple of 32).
+  int detection_max_side = 960;
+  int recognition_max_width = 480;  // crops are 48 px tall
+  int recognition_batch = 8;
+  DirectionMode direction = DirectionMode::kClassifier;
+  float direction_confident = 0.9f;  // classifier probability above which one crop suffices
+  LexiconOptions lexicon;
+  // Re-fit the corners to the ink (on the ground plane when SpotRequest::camera is set).
+  bool refine_corners = true;
+  CornerRefinementOptions refinement;
+  // Free readings (no lexicon match) below this mean confidence are dropped as non-text.
+  float min_text_confidence = 0.6f;
+  // Map-guided spotting: the region is expanded to at least these multiples of its text
+  // size and warped to a patch of this size (the patch keeps the text's aspect ratio).
+  float region_expand_x = 1.4f;
+  float region_expand_y = 2.2f;
+  cv::Size region_patch{256, 64};
+};
+
+class PpOcrSpotter : public TextSpotter {
+ public:
+  // Loads every model; throws InputError naming a missing or unreadable file.
+  explicit PpOcrSpotter(const PpOcrOptions& options);
+  ~PpOcrSpotter() override;
+
+  std::string name() const override { return "ppocr-v4"; }
+  std::vector<TextInstance> spot(const cv::Mat& image, const SpotRequest& request) override;
+
+  const PpOcrOptions& options() const { return options_; }
+
+ private:
+  struct Networks;
+  std::vector<TextInstance> spotFullFrame(const cv::Mat& image, const SpotRequest& request);
+  std::vector<TextInstance> spotRegions(const cv::Mat& image, const SpotRequest& request);
+
+  PpOcrOptions options_;
+  std::unique_ptr<Networks> nets_;
+};
+
+// Throws InputError unless `image` is a non-empty 8-bit 3-channel image.
+void requireBgrImage(const cv::Mat& image, const std::string& what = "image");
+
+}  // namespace parkloc::ocr

@@ -1,0 +1,60 @@
+#pragma once
+// The classification head (paper section 3.2): pillar / parking number / other, from the
+// instance box expanded by a ratio (the paper takes 2) so the classifier sees the text's
+// surroundings (floor paint vs pillar face), plus simple shape features of the reading.
+// A small multilayer perceptron (cv::ml::ANN_MLP) on HOG + colour + text features, trained
+// by `parkloc train classifier` and stored as one YAML file.
+#include <opencv2/core.hpp>
+#include <opencv2/ml.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "map/landmark.h"
+#include "ocr/quad.h"
+
+namespace parkloc::ocr {
+
+struct ClassifierFeatureOptions {
+  float expand_ratio = 2.f;     // the paper's choice; 1 is the ablation
+  cv::Size patch_size{64, 32};  // the expanded box is warped to this, upright
+};
+
+// Feature vector (CV_32F, one row) of one instance: HOG and colour statistics of the
+// expanded, rectified box; the reading's length and character mix; the box's size and
+// position in the image.
+cv::Mat classifierFeatures(const cv::Mat& image, const Quad& quad, const std::string& text,
+                           const ClassifierFeatureOptions& options);
+
+struct ClassifierTrainOptions {
+  int hidden_units = 24;
+  int max_iterations = 400;
+  unsigned seed = 7;
+};
+
+class TextClassifier {
+ public:
+  TextClassifier() = default;
+  bool empty() const { return !mlp_; }
+  const ClassifierFeatureOptions& featureOptions() const { return options_; }
+
+  // `features`: one row per instance (classifierFeatures); `labels`: TextClass per row.
+  static TextClassifier train(const cv::Mat& features, const std::vector<map::TextClass>& labels,
+                              const ClassifierFeatureOptions& feature_options,
+                              const ClassifierTrainOptions& options = {});
+  // Throws InputError naming the path when missing or not a classifier file.
+  static TextClassifier load(const std::string& path);
+  void save(const std::string& path) const;
+
+  // Class and its softmax-normalised score for one feature row.
+  std::pair<map::TextClass, float> predict(const cv::Mat& feature_row) const;
+  std::pair<map::TextClass, float> classify(const cv::Mat& image, const Quad& quad,
+                                            const std::string& text) const;
+
+ private:
+  ClassifierFeatureOptions options_;
+  cv::Mat mean_, inv_std_;  // feature standardisation
+  cv::Ptr<cv::ml::ANN_MLP> mlp_;
+};
+
+}  // namespace parkloc::ocr

@@ -1,0 +1,110 @@
+// End-to-end through the real PP-OCRv4 models: few, small images (these also run under ASan).
+#include "ocr/ppocr/pp_ocr_spotter.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <opencv2/imgproc.hpp>
+
+#include "common/error.h"
+#include "geometry/rig.h"
+#include "synthetic_text.h"
+
+namespace parkloc::ocr {
+namespace {
+
+class PpOcrSpotterTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    PpOcrOptions options;
+    options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+    spotter_ = std::make_unique<PpOcrSpotter>(options);
+  }
+  static void TearDownTestSuite() { spotter_.reset(); }
+  static std::unique_ptr<PpOcrSpotter> spotter_;
+};
+std::unique_ptr<PpOcrSpotter> PpOcrSpotterTest::spotter_;
+
+double maxCornerError(const Quad& a, const Quad& b) {
+  double worst = 0;
+  for (int k = 0; k < 4; ++k) worst = std::max(worst, cv::norm(a[k] - b[k]));
+  return worst;
+}
+
+TEST_F(PpOcrSpotterTest, ReadsARenderedLineUprightAndUpsideDown) {
+  const int margin = 24, ink = 40;
+  const cv::Mat upright = testing::renderTextLine("B2-117", ink, margin);
+  cv::Mat turned;
+  cv::rotate(upright, turned, cv::ROTATE_180);
+  const float W = upright.cols, H = upright.rows;
+  // The ink box in each image, reading order.
+  const Quad ink_box = {cv::Point2f(margin - 0.5f, margin - 0.5f),
+                        {W - margin - 0.5f, margin - 0.5f},
+                        {W - margin - 0.5f, H - margin - 0.5f},
+                        {margin - 0.5f, H - margin - 0.5f}};
+  Quad turned_box;
+  for (int k = 0; k < 4; ++k) turned_box[k] = cv::Point2f(W - 1, H - 1) - ink_box[k];
+
+  for (const auto& [image, truth] : {std::pair{upright, ink_box}, std::pair{turned, turned_box}}) {
+    const auto found = spotter_->spot(image, {});
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].text, "B2-117");
+    EXPECT_FALSE(found[0].lexicon_match);
+    EXPECT_GT(found[0].recognition_score, 0.8f);
+    // Corners re-fitted to the ink.
+    EXPECT_LT(maxCornerError(found[0].polygon, truth), 2.0);
+  }
+}
+
+TEST_F(PpOcrSpotterTest, ReadsFloorTextThroughTheFisheyeAndMatchesTheLexicon) {
+  const auto rig = geometry::defaultRig();
+  const auto* left = rig.find("left");
+  ASSERT_NE(left, nullptr);
+  // A 1.2 x 0.45 m number on the floor 1.6 m left of the car, reading towards the rear:
+  // upside down in the left camera.
+  const auto scene = testing::renderFloorText(*left, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
+  SpotRequest request;
+  request.lexicon = {"B2-112", "B2-117", "B1-117", "A023"};
+  request.camera = left;  // corners fitted on the ground plane
+  const auto found = spotter_->spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].text, "B2-117");
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_GT(found[0].recognition_score, 0.9f);
+  EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), 2.0);
+
+  // Map-guided: a predicted region 8 px off reads the same text inside it only.
+  RegionOfInterest region;
+  for (int k = 0; k < 4; ++k) region.polygon[k] = scene.truth[k] + cv::Point2f(8, -5);
+  region.expected_texts = {"B2-117", "B2-118"};
+  SpotRequest guided;
+  guided.regions = {region};
+  guided.camera = left;
+  const auto in_region = spotter_->spot(scene.image, guided);
+  ASSERT_EQ(in_region.size(), 1u);
+  EXPECT_EQ(in_region[0].text, "B2-117");
+  EXPECT_TRUE(in_region[0].lexicon_match);
+  EXPECT_LT(maxCornerError(in_region[0].polygon, scene.truth), 3.0);
+}
+
+TEST_F(PpOcrSpotterTest, RejectsEmptyAndWronglyTypedImages) {
+  EXPECT_THROW(spotter_->spot(cv::Mat(), {}), InputError);
+  EXPECT_THROW(spotter_->spot(cv::Mat(32, 32, CV_8UC1, cv::Scalar(0)), {}), InputError);
+  EXPECT_THROW(spotter_->spot(cv::Mat(32, 32, CV_32FC3, cv::Scalar::all(0)), {}), InputError);
+}
+
+TEST(PpOcrSpotterModels, MissingModelFileIsAnInputErrorNamingThePath) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory("/nonexistent/models");
+  try {
+    PpOcrSpotter spotter(options);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/models/ch_PP-OCRv4_det_infer.onnx"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace parkloc::ocr

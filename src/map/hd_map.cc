@@ -1,5 +1,6 @@
 #include "map/hd_map.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -12,6 +13,13 @@ namespace {
 long long packCell(long long ix, long long iy) {
   return static_cast<long long>((static_cast<unsigned long long>(ix) << 32) ^
                                 (static_cast<unsigned long long>(iy) & 0xffffffffULL));
+}
+// Grid index of one coordinate, clamped to 32 bits: the map accepts any finite position, and
+// a far-out landmark or query then shares the outermost cell instead of overflowing the
+// double-to-integer cast (undefined behaviour; found by fuzz/fuzz_map).
+long long cellIndex(double coordinate, double cell_size) {
+  return static_cast<long long>(
+      std::clamp(std::floor(coordinate / cell_size), -2147483648.0, 2147483647.0));
 }
 }  // namespace
 
@@ -63,27 +71,34 @@ const Landmark* HdMap::findById(const std::string& id) const {
 }
 
 HdMap::CellKey HdMap::cellOf(const Eigen::Vector2d& p) const {
-  const long long ix = static_cast<long long>(std::floor(p.x() / cell_size_));
-  const long long iy = static_cast<long long>(std::floor(p.y() / cell_size_));
-  return packCell(ix, iy);
+  return packCell(cellIndex(p.x(), cell_size_), cellIndex(p.y(), cell_size_));
 }
 
 std::vector<const Landmark*> HdMap::withinRadius(const Eigen::Vector2d& center, double radius,
                                                  const std::string& level) const {
   std::vector<const Landmark*> out;
   if (!(radius >= 0.0) || !center.allFinite()) return out;
-  const long long x0 = static_cast<long long>(std::floor((center.x() - radius) / cell_size_));
-  const long long x1 = static_cast<long long>(std::floor((center.x() + radius) / cell_size_));
-  const long long y0 = static_cast<long long>(std::floor((center.y() - radius) / cell_size_));
-  const long long y1 = static_cast<long long>(std::floor((center.y() + radius) / cell_size_));
+  const auto matches = [&](const Landmark& l) {
+    return (l.position.head<2>() - center).norm() <= radius && (level.empty() || l.level == level);
+  };
+  const long long x0 = cellIndex(center.x() - radius, cell_size_);
+  const long long x1 = cellIndex(center.x() + radius, cell_size_);
+  const long long y0 = cellIndex(center.y() - radius, cell_size_);
+  const long long y1 = cellIndex(center.y() + radius, cell_size_);
+  // A query wider than the map has landmarks (a huge or infinite radius) scans the landmarks
+  // instead of up to 2^64 empty cells.
+  if ((static_cast<double>(x1 - x0) + 1.0) * (static_cast<double>(y1 - y0) + 1.0) >
+      static_cast<double>(landmarks_.size())) {
+    for (const Landmark& l : landmarks_)
+      if (matches(l)) out.push_back(&l);
+    return out;
+  }
   for (long long ix = x0; ix <= x1; ++ix) {
     for (long long iy = y0; iy <= y1; ++iy) {
       const auto it = grid_.find(packCell(ix, iy));
       if (it == grid_.end()) continue;
       for (const size_t i : it->second) {
-        const Landmark& l = landmarks_[i];
-        if ((l.position.head<2>() - center).norm() <= radius && (level.empty() || l.level == level))
-          out.push_back(&l);
+        if (matches(landmarks_[i])) out.push_back(&landmarks_[i]);
       }
     }
   }

@@ -35,3 +35,23 @@ format:
 
 clean:
 	@rm -rf $(BUILD) $(BUILD_ASAN)
+
+# Fuzzing (docs/RELIABILITY.md): libFuzzer targets for every parser of outside data, built
+# with clang and ASan + UBSan in $(BUILD_FUZZ). `make fuzz` runs each target FUZZ_SECONDS
+# (FUZZ_RUNS=N: N executions instead); `make fuzz-smoke` runs each for a few seconds (CI).
+BUILD_FUZZ   ?= build-fuzz
+FUZZ_SECONDS ?= 300
+FUZZ_SMOKE_SECONDS ?= 8
+
+.PHONY: fuzz-build fuzz fuzz-smoke
+
+fuzz-build: setup
+	@CC=clang CXX=clang++ cmake -S . -B $(BUILD_FUZZ) -DPARKLOC_FUZZ=ON -DPARKLOC_BUILD_TESTS=OFF \
+	  -DPARKLOC_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g -O1" >/dev/null
+	@cmake --build $(BUILD_FUZZ) -j $(JOBS) --target fuzz_targets
+
+fuzz: fuzz-build
+	@fuzz/run.sh $(BUILD_FUZZ) $(FUZZ_SECONDS)
+
+fuzz-smoke: fuzz-build
+	@fuzz/run.sh $(BUILD_FUZZ) $(FUZZ_SMOKE_SECONDS)

@@ -1,0 +1,152 @@
+#include <fmt/format.h>
+
+#include <chrono>
+#include <iostream>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include "apps/parkloc/command.h"
+
+#include "common/error.h"
+#include "io/sequence.h"
+#include "sim/contact_sheet.h"
+#include "sim/dataset_writer.h"
+#include "sim/scenario.h"
+
+namespace {
+
+struct SimulateArgs {
+  std::string scenario;
+  std::string out;
+  long long seed = -1;
+  int max_sequences = -1;
+  int max_frames = -1;
+  int jobs = 1;
+  bool quiet = false;
+};
+
+void runSimulate(const SimulateArgs& a) {
+  using namespace parkloc;
+  const sim::Scenario scenario =
+      a.scenario.empty() ? sim::defaultScenario() : sim::loadScenario(a.scenario);
+  sim::DatasetOptions options;
+  options.out_dir = a.out;
+  if (a.seed >= 0) options.seed = static_cast<uint64_t>(a.seed);
+  options.max_sequences = a.max_sequences;
+  options.max_frames = a.max_frames;
+  options.jobs = a.jobs;
+  const auto start = std::chrono::steady_clock::now();
+  auto bar = [&](size_t done, size_t total) {
+    if (a.quiet) return;
+    const double frac = total ? static_cast<double>(done) / total : 1.0;
+    const int width = 40;
+    const int filled = static_cast<int>(frac * width);
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double eta = frac > 0 ? elapsed / frac - elapsed : 0.0;
+    std::cerr << fmt::format("\rsimulate [{}{}] {}/{} frame sets, {:.0f} s, eta {:.0f} s ",
+                             std::string(filled, '#'), std::string(width - filled, '.'), done,
+                             total, elapsed, eta)
+              << std::flush;
+  };
+  const sim::DatasetStats s = sim::writeDataset(scenario, options, bar);
+  if (!a.quiet) std::cerr << "\n";
+  std::cout << fmt::format("wrote {} sequences, {} frame sets, {} images to {}\n", s.sequences,
+                           s.frame_sets, s.images, a.out);
+  std::cout << fmt::format(
+      "instances: pillar {}, parking_number {}, other {} (occluded >= 0.5: {}, truncated: {})\n",
+      s.instances_per_class[0], s.instances_per_class[1], s.instances_per_class[2],
+      s.occluded_instances, s.truncated_instances);
+  for (const auto& [k, v] : s.images_per_split)
+    std::cout << fmt::format("split {}: {} images\n", k, v);
+  for (const auto& [k, v] : s.images_per_condition)
+    std::cout << fmt::format(
+        "condition {}: {} images, {} instances\n", k, v,
+        s.instances_per_condition.count(k) ? s.instances_per_condition.at(k) : 0);
+  for (const auto& [k, v] : s.instances_per_rotation)
+    std::cout << fmt::format("rotation {}: {} instances\n", k, v);
+  std::cout << fmt::format("time: {:.1f} s wall, {:.1f} ms per frame set per job\n", s.wall_seconds,
+                           s.frame_sets ? 1000.0 * s.render_seconds / s.frame_sets : 0.0);
+}
+
+struct SheetArgs {
+  std::string dataset;
+  std::string out;
+  int per_sequence = 1;
+  int max_rows = 12;
+  bool labels = false;
+  std::vector<std::string> sequences;
+};
+
+// Picks frames spread over each sequence (or the listed ones) and writes one PNG.
+void runSheet(const SheetArgs& a) {
+  namespace fs = std::filesystem;
+  using namespace parkloc;
+  const fs::path root = fs::path(a.dataset) / "sequences";
+  if (!fs::is_directory(root)) throw InputError("sheet: " + root.string() + " is not a folder");
+  std::vector<std::string> names = a.sequences;
+  if (names.empty()) {
+    for (const auto& e : fs::directory_iterator(root))
+      if (e.is_directory()) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+  }
+  std::vector<sim::ContactSheetRow> rows;
+  for (const auto& name : names) {
+    const fs::path dir = root / name;
+    std::vector<double> stamps;
+    for (const auto& e : fs::directory_iterator(dir / "images" / "front"))
+      stamps.push_back(std::stod(e.path().stem().string()));
+    std::sort(stamps.begin(), stamps.end());
+    if (stamps.empty()) continue;
+    std::string condition;
+    std::ifstream meta(dir / "meta.json");
+    if (meta) condition = nlohmann::json::parse(meta, nullptr, false).value("condition", "");
+    for (int k = 0; k < a.per_sequence; ++k) {
+      const size_t i = (stamps.size() - 1) * (2 * k + 1) / (2 * a.per_sequence);
+      rows.push_back(
+          {dir.string(), stamps[i], fmt::format("{}  t={:.1f} s  {}", name, stamps[i], condition)});
+    }
+  }
+  if (static_cast<int>(rows.size()) > a.max_rows) rows.resize(a.max_rows);
+  const cv::Mat sheet =
+      sim::makeContactSheet(rows, {"front", "left", "rear", "right"}, 480, a.labels);
+  if (!cv::imwrite(a.out, sheet)) throw IoError("sheet: cannot write " + a.out);
+  std::cout << fmt::format("wrote {} ({} rows)\n", a.out, rows.size());
+}
+
+const bool registered_sheet = parkloc::app::registerCommand([](CLI::App& parent) {
+  auto args = std::make_shared<SheetArgs>();
+  auto* cmd =
+      parent.add_subcommand("sheet", "Contact sheet (PNG) of frames of a simulated dataset");
+  cmd->add_option("--dataset", args->dataset, "Dataset folder (holds sequences/)")->required();
+  cmd->add_option("--out", args->out, "Output PNG")->required();
+  cmd->add_option("--per-sequence", args->per_sequence, "Frame sets per sequence")
+      ->check(CLI::Range(1, 50));
+  cmd->add_option("--max-rows", args->max_rows, "At most this many rows")
+      ->check(CLI::Range(1, 200));
+  cmd->add_option("--sequence", args->sequences, "Only these sequences (repeatable)");
+  cmd->add_flag("--labels", args->labels, "Draw the label polygons");
+  cmd->callback([args] { runSheet(*args); });
+});
+
+const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
+  auto args = std::make_shared<SimulateArgs>();
+  auto* cmd = parent.add_subcommand(
+      "simulate", "Generate the synthetic garage dataset (images, labels, maps, poses, odometry)");
+  cmd->add_option("--scenario", args->scenario,
+                  "Scenario YAML (default: the built-in default scenario)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out", args->out, "Output folder")->required();
+  cmd->add_option("--seed", args->seed,
+                  "Seed replacing the scenario's (every random choice changes)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-sequences", args->max_sequences, "Write at most N sequences");
+  cmd->add_option("--max-frames", args->max_frames, "Write at most N frame sets per sequence");
+  cmd->add_option("--jobs", args->jobs, "Sequences rendered in parallel")->check(CLI::Range(1, 64));
+  cmd->add_flag("--quiet", args->quiet, "No progress bar");
+  cmd->callback([args] { runSimulate(*args); });
+});
+
+}  // namespace

@@ -1,0 +1,99 @@
+#include "sim/annotate.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace parkloc::sim {
+
+bool segmentBlocked(const GarageLevel& level, const Eigen::Vector3d& from,
+                    const Eigen::Vector3d& to, double end_margin) {
+  const Eigen::Vector3d d = to - from;
+  const double len = d.norm();
+  if (len < 1e-9) return false;
+  const double t_end = 1.0 - end_margin / len;
+  for (const Box& b : level.boxes) {
+    double t0 = 0.0, t1 = t_end;
+    bool miss = false;
+    for (int a = 0; a < 3 && !miss; ++a) {
+      if (std::abs(d[a]) < 1e-12) {
+        if (from[a] < b.lo[a] || from[a] > b.hi[a]) miss = true;
+        continue;
+      }
+      double ta = (b.lo[a] - from[a]) / d[a], tb = (b.hi[a] - from[a]) / d[a];
+      if (ta > tb) std::swap(ta, tb);
+      t0 = std::max(t0, ta);
+      t1 = std::min(t1, tb);
+      if (t0 > t1) miss = true;
+    }
+    if (!miss) return true;
+  }
+  return false;
+}
+
+std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
+                                             const geometry::RigCamera& camera,
+                                             const geometry::Pose2& map_from_vehicle,
+                                             const AnnotateOptions& options) {
+  const GarageLevel& L = garage.levels.at(level);
+  const geometry::Rigid3 map_from_camera = map_from_vehicle.toRigid3() * camera.vehicle_from_camera;
+  const geometry::Rigid3 camera_from_map = map_from_camera.inverse();
+  const Eigen::Vector3d eye = map_from_camera.translation();
+  std::vector<io::LabelInstance> out;
+  for (const TextItem& item : L.texts) {
+    const map::Landmark& lm = item.landmark;
+    if ((lm.position - eye).norm() > options.max_distance) continue;
+    // Text faces the camera? Ground text is seen from above; vertical text from its front.
+    const Eigen::Vector3d normal =
+        lm.surface == map::Surface::kGround ? Eigen::Vector3d::UnitZ() : lm.normal;
+    if (normal.dot(eye - lm.position) <= 0.0) continue;
+    const auto corners = lm.corners();
+    std::array<Eigen::Vector2d, 4> poly;
+    bool projectable = true;
+    for (int k = 0; k < 4 && projectable; ++k) {
+      const auto px = camera.model.project(camera_from_map * corners[k]);
+      if (!px)
+        projectable = false;
+      else
+        poly[k] = *px;
+    }
+    if (!projectable) continue;
+    // Apparent height: the quadrilateral's area over its reading length (a text seen at a
+    // grazing angle is a thin sliver even when its side edges are long).
+    auto cross2 = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+      return a.x() * b.y() - a.y() * b.x();
+    };
+    const double area = 0.5 * std::abs(cross2(poly[2] - poly[0], poly[3] - poly[1]));
+    const double length = 0.5 * ((poly[1] - poly[0]).norm() + (poly[2] - poly[3]).norm());
+    if (length <= 0.0 || area / length < options.min_height_px) continue;
+    // Sample points on the text: inside the image, and seen or hidden.
+    int inside = 0, hidden = 0, total = 0;
+    const Eigen::Vector3d r = lm.readingDirection() * lm.width;
+    const Eigen::Vector3d u = lm.upDirection() * lm.height;
+    for (int i = 0; i < options.samples_u; ++i)
+      for (int j = 0; j < options.samples_v; ++j) {
+        ++total;
+        const double a = (i + 0.5) / options.samples_u - 0.5,
+                     b = (j + 0.5) / options.samples_v - 0.5;
+        const Eigen::Vector3d p = lm.position + a * r + b * u;
+        const auto px = camera.model.project(camera_from_map * p);
+        if (!px || !camera.model.inImage(*px)) continue;
+        ++inside;
+        if (segmentBlocked(L, eye, p)) ++hidden;
+      }
+    if (inside < options.min_inside_fraction * total) continue;
+    io::LabelInstance inst;
+    inst.polygon = poly;
+    inst.text = lm.text;
+    inst.cls = lm.cls;
+    inst.landmark_id = lm.id;
+    inst.occluded_fraction = static_cast<double>(hidden) / inside;
+    inst.truncated = inside < total;
+    for (const auto& c : poly) inst.truncated = inst.truncated || !camera.model.inImage(c);
+    const Eigen::Vector2d reading = 0.5 * (poly[1] + poly[2]) - 0.5 * (poly[0] + poly[3]);
+    inst.rotation_deg = std::atan2(reading.y(), reading.x()) * 180.0 / M_PI;
+    out.push_back(inst);
+  }
+  return out;
+}
+
+}  // namespace parkloc::sim

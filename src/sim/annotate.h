@@ -1,0 +1,31 @@
+#pragma once
+// Ground-truth text labels of one rendered image: every text of the level (map landmarks
+// and licence plates) projected through the vehicle pose and the camera, with truncation,
+// occlusion by pillars and cars, and the reading direction's angle in the image.
+#include <vector>
+
+#include "geometry/pose.h"
+#include "geometry/rig.h"
+#include "io/labels.h"
+#include "sim/garage.h"
+
+namespace parkloc::sim {
+
+struct AnnotateOptions {
+  double min_height_px = 8.0;        // shorter text is left out
+  double max_distance = 30.0;        // metres from the camera
+  double min_inside_fraction = 0.3;  // of the text's sample points inside the image
+  int samples_u = 7, samples_v = 3;  // grid of points on the text for occlusion
+};
+
+std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
+                                             const geometry::RigCamera& camera,
+                                             const geometry::Pose2& map_from_vehicle,
+                                             const AnnotateOptions& options = {});
+
+// True when the segment from `from` to `to` passes through one of the level's boxes
+// (pillars, cars), excluding the last `end_margin` metres (the text's own surface).
+bool segmentBlocked(const GarageLevel& level, const Eigen::Vector3d& from,
+                    const Eigen::Vector3d& to, double end_margin = 0.01);
+
+}  // namespace parkloc::sim

@@ -1,0 +1,313 @@
+#include "sim/dataset_writer.h"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <future>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <thread>
+
+#include "common/error.h"
+#include "geometry/rig.h"
+#include "io/calibration_yaml.h"
+#include "io/labels.h"
+#include "io/map_geojson.h"
+#include "io/odometry_csv.h"
+#include "io/sequence.h"
+#include "io/tum.h"
+#include "sim/annotate.h"
+#include "sim/drive.h"
+#include "sim/garage.h"
+#include "sim/renderer.h"
+
+namespace parkloc::sim {
+namespace fs = std::filesystem;
+
+namespace {
+
+uint64_t mix(uint64_t x) {
+  // splitmix64 finaliser: decorrelates nearby seeds.
+  x += 0x9E3779B97F4A7C15ULL;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+  return x ^ (x >> 31);
+}
+
+std::string rotationSubset(double rotation_deg) {
+  const double a = std::abs(rotation_deg);
+  if (a >= 150.0) return "rot180";
+  if (a >= 60.0 && a <= 120.0) return "rot90";
+  if (a >= 30.0 && a < 60.0) return "rot45";
+  return "";
+}
+
+struct SequenceResult {
+  DatasetStats stats;
+};
+
+}  // namespace
+
+uint64_t garageSeed(uint64_t scenario_seed, size_t garage) {
+  return mix(mix(scenario_seed) ^ (garage + 1));
+}
+uint64_t driveSeed(uint64_t scenario_seed, size_t garage, size_t drive) {
+  return mix(garageSeed(scenario_seed, garage) ^ ((drive + 1) << 32));
+}
+
+std::vector<SequencePlan> planSequences(const Scenario& scenario) {
+  std::vector<SequencePlan> plans;
+  for (size_t gi = 0; gi < scenario.garages.size(); ++gi) {
+    const GarageSpec& g = scenario.garages[gi];
+    for (size_t di = 0; di < g.drives.size(); ++di) {
+      SequencePlan p;
+      p.garage = gi;
+      p.drive = di;
+      p.level = g.drives[di].level.empty() ? g.levels[di % g.levels.size()] : g.drives[di].level;
+      p.split = g.split;
+      p.condition = g.drives[di].condition;
+      p.name = fmt::format("{}_{}_d{}", g.name, p.level, di);
+      plans.push_back(p);
+    }
+  }
+  return plans;
+}
+
+DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& options,
+                          const ProgressCallback& progress) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  if (options.out_dir.empty()) throw InputError("simulate: --out is empty");
+  if (options.jobs < 1 || options.jobs > 256)
+    throw InputError(fmt::format("simulate: --jobs {} out of range", options.jobs));
+  Scenario scenario = scenario_in;
+  if (options.seed) scenario.seed = *options.seed;
+  std::vector<SequencePlan> plans = planSequences(scenario);
+  if (options.max_sequences >= 0 && static_cast<size_t>(options.max_sequences) < plans.size())
+    plans.resize(options.max_sequences);
+  for (const auto& p : plans)
+    if (scenario.garages[p.garage].levels.end() ==
+        std::find(scenario.garages[p.garage].levels.begin(),
+                  scenario.garages[p.garage].levels.end(), p.level))
+      throw InputError(fmt::format("scenario: drive level '{}' is not a level of garage '{}'",
+                                   p.level, scenario.garages[p.garage].name));
+
+  const fs::path root(options.out_dir);
+  std::error_code ec;
+  fs::create_directories(root / "sequences", ec);
+  if (ec)
+    throw IoError(
+        fmt::format("simulate: cannot create {}: {}", (root / "sequences").string(), ec.message()));
+
+  const geometry::Rig rig = geometry::defaultRig();
+  auto rays = std::make_shared<const std::vector<CameraRays>>(buildRigRays(rig));
+
+  // Plan every drive first (cheap) so the progress total is known.
+  std::mutex garage_mutex;
+  std::map<size_t, std::shared_future<std::shared_ptr<const Garage>>> garages;
+  std::map<size_t, int> garage_users;
+  for (const auto& p : plans) ++garage_users[p.garage];
+  auto getGarage = [&](size_t gi) {
+    std::shared_future<std::shared_ptr<const Garage>> f;
+    bool build = false;
+    std::promise<std::shared_ptr<const Garage>> promise;
+    {
+      std::lock_guard<std::mutex> lock(garage_mutex);
+      auto it = garages.find(gi);
+      if (it == garages.end()) {
+        f = promise.get_future().share();
+        garages.emplace(gi, f);
+        build = true;
+      } else {
+        f = it->second;
+      }
+    }
+    if (build) {
+      try {
+        promise.set_value(std::make_shared<const Garage>(
+            generateGarage(scenario.garages[gi], garageSeed(scenario.seed, gi))));
+      } catch (...) {
+        promise.set_exception(std::current_exception());
+      }
+    }
+    return f.get();
+  };
+  auto releaseGarage = [&](size_t gi) {
+    std::lock_guard<std::mutex> lock(garage_mutex);
+    if (--garage_users[gi] == 0) garages.erase(gi);
+  };
+
+  // Progress total: the frame budget of each drive, corrected once its plan is known.
+  std::vector<int> budget(plans.size());
+  std::atomic<long> total{0};
+  for (size_t i = 0; i < plans.size(); ++i) {
+    const DriveSpec& ds = scenario.garages[plans[i].garage].drives[plans[i].drive];
+    budget[i] = static_cast<int>(std::floor(ds.duration_s * scenario.frame_rate)) + 1;
+    if (options.max_frames >= 0) budget[i] = std::min(budget[i], options.max_frames);
+    total += budget[i];
+  }
+  std::atomic<size_t> done{0};
+  std::mutex progress_mutex;
+  std::mutex stats_mutex;
+  DatasetStats stats;
+  std::atomic<size_t> next{0};
+  std::exception_ptr failure;
+
+  auto runSequence = [&](size_t si) {
+    const SequencePlan& plan = plans[si];
+    const std::shared_ptr<const Garage> garage = getGarage(plan.garage);
+    const GarageSpec& gs = scenario.garages[plan.garage];
+    const DriveSpec& ds = gs.drives[plan.drive];
+    const int level = garage->levelIndex(plan.level);
+    const uint64_t seed = driveSeed(scenario.seed, plan.garage, plan.drive);
+    const Drive drive = planDrive(*garage, level, ds, seed);
+    int n = static_cast<int>(std::floor(drive.duration() * scenario.frame_rate + 1e-9)) + 1;
+    if (options.max_frames >= 0) n = std::min(n, options.max_frames);
+    total += n - budget[si];
+    const LightingOptions light = lightingForCondition(plan.condition, seed ^ 0xabcdefULL);
+    const Renderer renderer(*garage, level, rig, rays, light);
+
+    const fs::path dir = root / "sequences" / plan.name;
+    fs::remove_all(dir);
+    for (const auto& cam : rig.cameras) {
+      fs::create_directories(dir / "images" / cam.name);
+      fs::create_directories(dir / "labels" / cam.name);
+    }
+    io::saveCalibration(rig, (dir / "calib.yaml").string());
+    io::saveMap(garage->map, (dir / "map.geojson").string());
+
+    DatasetStats local;
+    local.sequences = 1;
+    std::vector<io::StampedPose> poses;
+    const auto render_start = std::chrono::steady_clock::now();
+    for (int k = 0; k < n; ++k) {
+      const double t = k / scenario.frame_rate;
+      const DriveState state = drive.at(t);
+      poses.push_back({t, state.pose.toRigid3()});
+      const std::vector<cv::Mat> images =
+          renderer.render(state.pose, mix(seed ^ (static_cast<uint64_t>(k) << 16)));
+      const std::string stem = io::timestampStem(t);
+      for (size_t c = 0; c < rig.cameras.size(); ++c) {
+        const auto& cam = rig.cameras[c];
+        const std::string image_path = (dir / "images" / cam.name / (stem + ".jpg")).string();
+        if (!cv::imwrite(image_path, images[c], {cv::IMWRITE_JPEG_QUALITY, scenario.jpeg_quality}))
+          throw IoError(fmt::format("simulate: cannot write {}", image_path));
+        io::ImageLabels labels;
+        labels.camera = cam.name;
+        labels.timestamp = t;
+        labels.width = cam.model.width;
+        labels.height = cam.model.height;
+        labels.instances = annotateImage(*garage, level, cam, state.pose);
+        io::saveLabels(labels, (dir / "labels" / cam.name / (stem + ".json")).string());
+        io::saveIcdarLabels(labels, (dir / "labels" / cam.name / (stem + ".txt")).string());
+        ++local.images;
+        ++local.images_per_condition[plan.condition];
+        ++local.images_per_split[plan.split];
+        for (const auto& inst : labels.instances) {
+          ++local.instances_per_class[static_cast<int>(inst.cls)];
+          ++local.instances_per_condition[plan.condition];
+          const std::string rot = rotationSubset(inst.rotation_deg);
+          if (!rot.empty()) ++local.instances_per_rotation[rot];
+          if (inst.occluded_fraction >= 0.5) ++local.occluded_instances;
+          if (inst.truncated) ++local.truncated_instances;
+        }
+      }
+      ++local.frame_sets;
+      const size_t d = ++done;
+      if (progress) {
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        progress(d, static_cast<size_t>(std::max<long>(total, static_cast<long>(d))));
+      }
+    }
+    local.render_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - render_start).count();
+    const double t_end = (n - 1) / scenario.frame_rate;
+    io::saveTum(poses, (dir / "poses.tum").string());
+    std::vector<io::OdometrySample> odo =
+        simulateOdometry(drive, scenario.odometry_rate, seed ^ 0x0d0e7ULL);
+    while (!odo.empty() && odo.back().timestamp > t_end + 1e-9) odo.pop_back();
+    io::saveOdometry(odo, (dir / "odometry.csv").string());
+
+    nlohmann::json meta;
+    meta["name"] = plan.name;
+    meta["scenario"] = scenario.name;
+    meta["garage"] = gs.name;
+    meta["level"] = plan.level;
+    meta["split"] = plan.split;
+    meta["condition"] = plan.condition;
+    meta["route"] = ds.route;
+    meta["frame_rate"] = scenario.frame_rate;
+    meta["odometry_rate"] = scenario.odometry_rate;
+    meta["frames"] = n;
+    meta["duration_s"] = t_end;
+    meta["seed"] = scenario.seed;
+    meta["garage_seed"] = garageSeed(scenario.seed, plan.garage);
+    meta["drive_seed"] = seed;
+    meta["numbering_scheme"] = toString(gs.numbering);
+    meta["fonts"] = gs.fonts;
+    meta["number_height_m"] = gs.number_height;
+    meta["levels"] = gs.levels;
+    meta["image_format"] = "jpg";
+    meta["jpeg_quality"] = scenario.jpeg_quality;
+    meta["light"] = {{"ambient", light.ambient},
+                     {"lamp_power", light.lamp_power},
+                     {"lamps_on_share", light.lamps_on_share},
+                     {"exposure", light.exposure},
+                     {"noise_sigma", light.noise_sigma},
+                     {"defocus_sigma", light.defocus_sigma},
+                     {"motion_blur_px", light.motion_blur_px}};
+    meta["garage_size_m"] = {garage->size.x(), garage->size.y()};
+    meta["ceiling_height_m"] = garage->ceiling_height;
+    std::ofstream(dir / "meta.json") << meta.dump(2) << "\n";
+    releaseGarage(plan.garage);
+
+    std::lock_guard<std::mutex> lock(stats_mutex);
+    stats.sequences += local.sequences;
+    stats.frame_sets += local.frame_sets;
+    stats.images += local.images;
+    for (int c = 0; c < 3; ++c) stats.instances_per_class[c] += local.instances_per_class[c];
+    for (const auto& [k, v] : local.images_per_condition) stats.images_per_condition[k] += v;
+    for (const auto& [k, v] : local.instances_per_condition) stats.instances_per_condition[k] += v;
+    for (const auto& [k, v] : local.instances_per_rotation) stats.instances_per_rotation[k] += v;
+    for (const auto& [k, v] : local.images_per_split) stats.images_per_split[k] += v;
+    stats.occluded_instances += local.occluded_instances;
+    stats.truncated_instances += local.truncated_instances;
+    stats.render_seconds += local.render_seconds;
+  };
+
+  auto worker = [&] {
+    for (;;) {
+      const size_t si = next++;
+      if (si >= plans.size()) return;
+      try {
+        runSequence(si);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(stats_mutex);
+        if (!failure) failure = std::current_exception();
+        next = plans.size();
+        return;
+      }
+    }
+  };
+  const int jobs = std::min<int>(options.jobs, static_cast<int>(std::max<size_t>(1, plans.size())));
+  std::vector<std::thread> threads;
+  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  if (failure) std::rethrow_exception(failure);
+
+  nlohmann::json splits = {{"train", nlohmann::json::array()},
+                           {"val", nlohmann::json::array()},
+                           {"test", nlohmann::json::array()}};
+  for (const auto& p : plans) splits[p.split].push_back(p.name);
+  std::ofstream(root / "splits.json") << splits.dump(2) << "\n";
+  stats.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return stats;
+}
+
+}  // namespace parkloc::sim

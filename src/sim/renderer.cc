@@ -1,0 +1,467 @@
+#include "sim/renderer.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <opencv2/core/utility.hpp>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+namespace parkloc::sim {
+namespace {
+
+constexpr int kTile = 16;
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+float bilinearF(const cv::Mat& m, float x, float y) {
+  x = std::clamp(x, 0.0f, static_cast<float>(m.cols - 1) - 1e-3f);
+  y = std::clamp(y, 0.0f, static_cast<float>(m.rows - 1) - 1e-3f);
+  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+  const float ax = x - x0, ay = y - y0;
+  const float* r0 = m.ptr<float>(y0);
+  const float* r1 = m.ptr<float>(std::min(y0 + 1, m.rows - 1));
+  const int x1 = std::min(x0 + 1, m.cols - 1);
+  const float top = r0[x0] + ax * (r0[x1] - r0[x0]);
+  const float bottom = r1[x0] + ax * (r1[x1] - r1[x0]);
+  return top + ay * (bottom - top);
+}
+
+// Small fast generator for sensor noise, seeded per row so rows can run in any order.
+struct XorShift {
+  uint64_t s;
+  explicit XorShift(uint64_t seed) : s(seed * 0x9E3779B97F4A7C15ULL + 0x632BE59BD9B4E019ULL) {
+    if (s == 0) s = 1;
+  }
+  uint32_t next() {
+    s ^= s << 13;
+    s ^= s >> 7;
+    s ^= s << 17;
+    return static_cast<uint32_t>(s >> 32);
+  }
+  // Approximately standard normal: the sum of four uniforms, rescaled.
+  float gauss() {
+    const uint32_t a = next(), b = next();
+    const float sum = static_cast<float>(a & 0xffff) + static_cast<float>(a >> 16) +
+                      static_cast<float>(b & 0xffff) + static_cast<float>(b >> 16);
+    return (sum * (1.0f / 65536.0f) - 2.0f) * 1.7320508f;
+  }
+};
+
+}  // namespace
+
+CameraRays buildCameraRays(const geometry::CameraModel& model, float vignetting) {
+  CameraRays r;
+  r.width = model.width;
+  r.height = model.height;
+  const size_t n = static_cast<size_t>(r.width) * r.height;
+  r.rays.assign(n, Eigen::Vector3f::Zero());
+  r.pixel_angle.assign(n, 0.0f);
+  r.vignette.assign(n, 0.0f);
+  cv::parallel_for_(cv::Range(0, r.height), [&](const cv::Range& range) {
+    for (int y = range.start; y < range.end; ++y)
+      for (int x = 0; x < r.width; ++x) {
+        const auto ray = model.unproject(Eigen::Vector2d(x, y));
+        if (ray) r.rays[static_cast<size_t>(y) * r.width + x] = ray->cast<float>();
+      }
+  });
+  const double rmax = std::hypot(r.width / 2.0, r.height / 2.0);
+  for (int y = 0; y < r.height; ++y)
+    for (int x = 0; x < r.width; ++x) {
+      const size_t i = static_cast<size_t>(y) * r.width + x;
+      const Eigen::Vector3f& a = r.rays[i];
+      if (a.isZero()) continue;
+      const Eigen::Vector3f& b = r.rays[x + 1 < r.width ? i + 1 : i - 1];
+      const Eigen::Vector3f& c = r.rays[y + 1 < r.height ? i + r.width : i - r.width];
+      const float da = b.isZero() ? 0.0f : std::acos(std::clamp(a.dot(b), -1.0f, 1.0f));
+      const float db = c.isZero() ? 0.0f : std::acos(std::clamp(a.dot(c), -1.0f, 1.0f));
+      r.pixel_angle[i] =
+          std::max(1e-4f, std::sqrt(da * db) > 0.0f ? std::sqrt(da * db) : std::max(da, db));
+      const double rr = std::hypot(x - model.cx, y - model.cy) / rmax;
+      r.vignette[i] = static_cast<float>(1.0 - vignetting * rr * rr);
+    }
+  return r;
+}
+
+std::vector<CameraRays> buildRigRays(const geometry::Rig& rig) {
+  std::vector<CameraRays> out;
+  for (const auto& c : rig.cameras) out.push_back(buildCameraRays(c.model));
+  return out;
+}
+
+LightingOptions lightingForCondition(const std::string& condition, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  auto u = [&](double a, double b) {
+    return static_cast<float>(std::uniform_real_distribution<double>(a, b)(rng));
+  };
+  LightingOptions l;
+  l.lamp_seed = seed ^ 0x5bd1e995ULL;
+  if (condition == "weak") {
+    l.ambient = u(0.03f, 0.07f);
+    l.lamp_power = u(2.0f, 3.5f);
+    l.lamps_on_share = u(0.5f, 0.75f);
+    l.exposure = u(0.9f, 1.3f);
+    l.noise_sigma = u(4.0f, 7.0f);
+  } else {
+    l.ambient = u(0.15f, 0.3f);
+    l.lamp_power = u(5.0f, 8.0f);
+    l.lamps_on_share = u(0.9f, 1.0f);
+    l.exposure = u(0.85f, 1.1f);
+    l.noise_sigma = u(1.0f, 2.0f);
+    if (condition == "blur") {
+      l.defocus_sigma = u(1.0f, 2.0f);
+      l.motion_blur_px = u(4.0f, 9.0f);
+    }
+  }
+  return l;
+}
+
+struct Renderer::Impl {
+  const Garage& g;
+  const GarageLevel& L;
+  geometry::Rig rig;
+  std::shared_ptr<const std::vector<CameraRays>> rays;
+  LightingOptions light;
+  std::vector<Lamp> lamps_on, lamps_off;
+  // Floor irradiance (10 texels per metre) and ceiling brightness.
+  cv::Mat floor_light, ceiling_light;
+  float light_tpm = 10.0f;
+  // Uniform grids (1 m cells) of floor decals and of lamps.
+  int grid_w = 0, grid_h = 0;
+  std::vector<std::vector<int>> decal_grid, lamp_grid;
+  std::vector<uint8_t> gamma_lut;
+  static constexpr int kLutSize = 4096;
+  static constexpr float kLutMax = 1.5f;
+
+  Impl(const Garage& garage, int level, const geometry::Rig& r,
+       std::shared_ptr<const std::vector<CameraRays>> ry, const LightingOptions& li)
+      : g(garage), L(garage.levels.at(level)), rig(r), rays(std::move(ry)), light(li) {
+    std::mt19937_64 rng(light.lamp_seed);
+    std::uniform_real_distribution<double> uni(0.0, 1.0);
+    for (const Lamp& lamp : L.lamps)
+      (uni(rng) < light.lamps_on_share ? lamps_on : lamps_off).push_back(lamp);
+    const float H = static_cast<float>(g.ceiling_height);
+    const int lw = static_cast<int>(std::ceil(g.size.x() * light_tpm)) + 1;
+    const int lh = static_cast<int>(std::ceil(g.size.y() * light_tpm)) + 1;
+    floor_light.create(lh, lw, CV_32F);
+    ceiling_light.create(lh, lw, CV_32F);
+    cv::parallel_for_(cv::Range(0, lh), [&](const cv::Range& range) {
+      for (int y = range.start; y < range.end; ++y)
+        for (int x = 0; x < lw; ++x) {
+          const float px = x / light_tpm, py = y / light_tpm;
+          float e = light.ambient, c = 0.6f * light.ambient;
+          for (const Lamp& lamp : lamps_on) {
+            const float dx = px - lamp.center.x(), dy = py - lamp.center.y();
+            const float d2 = dx * dx + dy * dy + H * H;
+            e += light.lamp_power * H * H / (d2 * d2);  // cosine at lamp and floor
+            const float r2 = dx * dx + dy * dy;
+            c += 0.5f * light.lamp_power / (H * H) *
+                 (0.15f / (0.15f + r2) + 0.2f / (1.0f + 0.3f * r2));
+          }
+          floor_light.at<float>(y, x) = e;
+          ceiling_light.at<float>(y, x) = c;
+        }
+    });
+    grid_w = static_cast<int>(std::ceil(g.size.x())) + 1;
+    grid_h = static_cast<int>(std::ceil(g.size.y())) + 1;
+    decal_grid.resize(static_cast<size_t>(grid_w) * grid_h);
+    lamp_grid.resize(decal_grid.size());
+    for (size_t i = 0; i < L.floor_decals.size(); ++i) {
+      const Decal& d = L.floor_decals[i];
+      const float pad = d.pad / d.texels_per_metre;
+      Eigen::Vector2f lo(kInf, kInf), hi(-kInf, -kInf);
+      for (float a : {-pad, d.size_u + pad})
+        for (float b : {-pad, d.size_v + pad}) {
+          const Eigen::Vector3f p = d.origin + a * d.axis_u + b * d.axis_v;
+          lo = lo.cwiseMin(p.head<2>());
+          hi = hi.cwiseMax(p.head<2>());
+        }
+      addToGrid(decal_grid, lo, hi, static_cast<int>(i));
+    }
+    for (size_t i = 0; i < L.lamps.size(); ++i) {
+      const Lamp& l = L.lamps[i];
+      addToGrid(lamp_grid, l.center - l.half_size, l.center + l.half_size, static_cast<int>(i));
+    }
+    gamma_lut.resize(kLutSize);
+    for (int i = 0; i < kLutSize; ++i) {
+      const float x = kLutMax * i / (kLutSize - 1);
+      // Soft shoulder so lamps clip gently, then sRGB-like gamma.
+      const float y = x < 0.8f ? x : 0.8f + 0.2f * std::tanh((x - 0.8f) / 0.2f);
+      gamma_lut[i] =
+          cv::saturate_cast<uint8_t>(255.0f * std::pow(std::clamp(y, 0.0f, 1.0f), 1.0f / 2.2f));
+    }
+  }
+
+  void addToGrid(std::vector<std::vector<int>>& grid, const Eigen::Vector2f& lo,
+                 const Eigen::Vector2f& hi, int index) const {
+    const int x0 = std::clamp(static_cast<int>(std::floor(lo.x())), 0, grid_w - 1);
+    const int x1 = std::clamp(static_cast<int>(std::floor(hi.x())), 0, grid_w - 1);
+    const int y0 = std::clamp(static_cast<int>(std::floor(lo.y())), 0, grid_h - 1);
+    const int y1 = std::clamp(static_cast<int>(std::floor(hi.y())), 0, grid_h - 1);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) grid[static_cast<size_t>(y) * grid_w + x].push_back(index);
+  }
+
+  const std::vector<int>& cell(const std::vector<std::vector<int>>& grid, float x, float y) const {
+    const int ix = std::clamp(static_cast<int>(x), 0, grid_w - 1);
+    const int iy = std::clamp(static_cast<int>(y), 0, grid_h - 1);
+    return grid[static_cast<size_t>(iy) * grid_w + ix];
+  }
+
+  // Coverage of decal d at point p (0 outside); footprint in metres.
+  float decalCoverage(const Decal& d, const Eigen::Vector3f& p, float footprint_m) const {
+    const Eigen::Vector3f q = p - d.origin;
+    const float u = q.dot(d.axis_u), v = q.dot(d.axis_v);
+    if (d.texture < 0)
+      return (u >= 0.0f && v >= 0.0f && u <= d.size_u && v <= d.size_v) ? 1.0f : 0.0f;
+    const float pad = d.pad / d.texels_per_metre;
+    if (u < -pad || v < -pad || u > d.size_u + pad || v > d.size_v + pad) return 0.0f;
+    return g.textures[d.texture].sample(u * d.texels_per_metre + d.pad - 0.5f,
+                                        v * d.texels_per_metre + d.pad - 0.5f,
+                                        footprint_m * d.texels_per_metre);
+  }
+
+  // Irradiance on a vertical surface with normal n at p, from the lit lamps nearby.
+  float verticalLight(const Eigen::Vector3f& p, const Eigen::Vector3f& n) const {
+    const float H = static_cast<float>(g.ceiling_height);
+    float e = 0.8f * light.ambient;
+    const float dz = H - p.z();
+    for (const Lamp& lamp : lamps_on) {
+      const float dx = lamp.center.x() - p.x(), dy = lamp.center.y() - p.y();
+      const float r2 = dx * dx + dy * dy;
+      if (r2 > 400.0f) continue;
+      const float d2 = r2 + dz * dz;
+      const float facing = n.x() * dx + n.y() * dy;
+      if (facing <= 0.0f) continue;
+      e += light.lamp_power * facing * dz / (d2 * d2);
+    }
+    // Light bounced from the floor.
+    return e + 0.15f * bilinearF(floor_light, p.x() * light_tpm, p.y() * light_tpm);
+  }
+
+  cv::Mat renderCamera(size_t ci, const geometry::Pose2& pose, uint64_t seed) const {
+    const geometry::RigCamera& cam = rig.cameras.at(ci);
+    const CameraRays& cr = (*rays).at(ci);
+    const geometry::Rigid3 map_from_camera = pose.toRigid3() * cam.vehicle_from_camera;
+    const Eigen::Matrix3f R = map_from_camera.linear().cast<float>();
+    const Eigen::Vector3f o = map_from_camera.translation().cast<float>();
+    const geometry::Rigid3 camera_from_map = map_from_camera.inverse();
+    const int W = cr.width, Hh = cr.height;
+    const int tiles_x = (W + kTile - 1) / kTile, tiles_y = (Hh + kTile - 1) / kTile;
+
+    // Box culling: the tiles each box may cover, from projected points on its edges.
+    std::vector<std::vector<int>> tiles(static_cast<size_t>(tiles_x) * tiles_y);
+    for (size_t bi = 0; bi < L.boxes.size(); ++bi) {
+      const Box& b = L.boxes[bi];
+      const Eigen::Vector3f centre = 0.5f * (b.lo + b.hi);
+      if ((centre - o).head<2>().norm() > 60.0f) continue;
+      const Eigen::Vector3f near_pt = o.cwiseMax(b.lo).cwiseMin(b.hi);
+      bool full = (near_pt - o).norm() < 0.3f;
+      int failed = 0, ok = 0;
+      float x0 = kInf, y0 = kInf, x1 = -kInf, y1 = -kInf;
+      constexpr int kSteps = 6;
+      for (int e = 0; e < 12 && !full; ++e) {
+        // Edge e: along axis a = e / 4, the other two coordinates from the bits of e % 4.
+        const int a = e / 4, bits = e % 4;
+        const int a1 = (a + 1) % 3, a2 = (a + 2) % 3;
+        for (int s = 0; s <= kSteps; ++s) {
+          Eigen::Vector3d p;
+          p[a] = b.lo[a] + (b.hi[a] - b.lo[a]) * s / double(kSteps);
+          p[a1] = (bits & 1) ? b.hi[a1] : b.lo[a1];
+          p[a2] = (bits & 2) ? b.hi[a2] : b.lo[a2];
+          const auto px = cam.model.project(camera_from_map * p);
+          if (!px) {
+            ++failed;
+            continue;
+          }
+          ++ok;
+          x0 = std::min(x0, float(px->x()));
+          y0 = std::min(y0, float(px->y()));
+          x1 = std::max(x1, float(px->x()));
+          y1 = std::max(y1, float(px->y()));
+        }
+      }
+      if (!full && ok == 0) continue;
+      if (failed > 0) full = true;
+      int tx0 = 0, ty0 = 0, tx1 = tiles_x - 1, ty1 = tiles_y - 1;
+      if (!full) {
+        const float margin = 4.0f + 0.08f * std::max(x1 - x0, y1 - y0);
+        tx0 = std::max(0, int((x0 - margin) / kTile));
+        ty0 = std::max(0, int((y0 - margin) / kTile));
+        tx1 = std::min(tiles_x - 1, int((x1 + margin) / kTile));
+        ty1 = std::min(tiles_y - 1, int((y1 + margin) / kTile));
+      }
+      for (int ty = ty0; ty <= ty1; ++ty)
+        for (int tx = tx0; tx <= tx1; ++tx)
+          tiles[static_cast<size_t>(ty) * tiles_x + tx].push_back(static_cast<int>(bi));
+    }
+
+    cv::Mat img(Hh, W, CV_8UC3);
+    const float X1 = static_cast<float>(g.size.x()), Y1 = static_cast<float>(g.size.y());
+    const float Hc = static_cast<float>(g.ceiling_height);
+    const float exposure = light.exposure;
+    const float lut_scale = (kLutSize - 1) / kLutMax;
+    const float ctpm = static_cast<float>(g.concrete_texels_per_metre);
+    const float ptpm = static_cast<float>(g.paint_texels_per_metre);
+    const float stpm = static_cast<float>(g.shade_texels_per_metre);
+
+    cv::parallel_for_(cv::Range(0, Hh), [&](const cv::Range& range) {
+      for (int y = range.start; y < range.end; ++y) {
+        XorShift noise(seed ^ (static_cast<uint64_t>(ci) << 40) ^ (static_cast<uint64_t>(y) << 20));
+        uint8_t* out = img.ptr<uint8_t>(y);
+        for (int x = 0; x < W; ++x) {
+          const size_t i = static_cast<size_t>(y) * W + x;
+          const Eigen::Vector3f& rc = cr.rays[i];
+          if (rc.z() == 0.0f && rc.x() == 0.0f && rc.y() == 0.0f) {
+            out[3 * x] = out[3 * x + 1] = out[3 * x + 2] = 0;
+            continue;
+          }
+          const Eigen::Vector3f d = R * rc;
+          const Eigen::Vector3f inv(1.0f / d.x(), 1.0f / d.y(), 1.0f / d.z());
+          // Interior of the level: leave through floor, ceiling or a wall.
+          const float tx = d.x() > 0 ? (X1 - o.x()) * inv.x() : (0.0f - o.x()) * inv.x();
+          const float ty = d.y() > 0 ? (Y1 - o.y()) * inv.y() : (0.0f - o.y()) * inv.y();
+          const float tz = d.z() > 0 ? (Hc - o.z()) * inv.z() : (0.0f - o.z()) * inv.z();
+          float t = tx;
+          int surface = 0;  // 0 wall x, 1 wall y, 2 floor/ceiling
+          if (ty < t) t = ty, surface = 1;
+          if (tz < t) t = tz, surface = 2;
+          int hit_box = -1, hit_axis = 0;
+          for (const int bi : tiles[static_cast<size_t>(y / kTile) * tiles_x + x / kTile]) {
+            const Box& b = L.boxes[bi];
+            const float ax0 = (b.lo.x() - o.x()) * inv.x(), ax1 = (b.hi.x() - o.x()) * inv.x();
+            const float ay0 = (b.lo.y() - o.y()) * inv.y(), ay1 = (b.hi.y() - o.y()) * inv.y();
+            const float az0 = (b.lo.z() - o.z()) * inv.z(), az1 = (b.hi.z() - o.z()) * inv.z();
+            const float nx = std::min(ax0, ax1), ny = std::min(ay0, ay1), nz = std::min(az0, az1);
+            const float tnear = std::max(nx, std::max(ny, nz));
+            const float tfar =
+                std::min(std::max(ax0, ax1), std::min(std::max(ay0, ay1), std::max(az0, az1)));
+            if (tnear <= tfar && tnear > 1e-4f && tnear < t) {
+              t = tnear;
+              hit_box = bi;
+              hit_axis = tnear == nx ? 0 : (tnear == ny ? 1 : 2);
+            }
+          }
+          const Eigen::Vector3f p = o + t * d;
+          const float footprint = t * cr.pixel_angle[i];
+          Eigen::Vector3f albedo;
+          float e;
+          if (hit_box >= 0) {
+            const Box& b = L.boxes[hit_box];
+            Eigen::Vector3f n = Eigen::Vector3f::Zero();
+            n[hit_axis] = d[hit_axis] > 0 ? -1.0f : 1.0f;
+            albedo = b.albedo;
+            if (b.material == Material::kPillar) {
+              // Painted foot band and concrete grain.
+              const float c = g.concrete.sampleNearestLevel(
+                  p.x() * ctpm + p.z() * 37.0f, p.y() * ctpm + p.z() * ctpm, footprint * ctpm);
+              albedo *= 0.6f + 0.7f * c;
+              if (p.z() < 0.35f)
+                albedo = (static_cast<int>((p.x() + p.y() + p.z()) * 4.0f) & 1)
+                             ? Eigen::Vector3f(0.8f, 0.65f, 0.05f)
+                             : Eigen::Vector3f(0.06f, 0.06f, 0.06f);
+            } else if (b.material == Material::kCarGlass && n.z() == 0.0f) {
+              albedo = Eigen::Vector3f(0.05f, 0.06f, 0.07f) +
+                       0.15f * Eigen::Vector3f(0.5f, 0.5f, 0.5f) * std::abs(d.z());
+            }
+            for (int k = 0; k < b.decal_count; ++k) {
+              const Decal& dc = L.box_decals[b.first_decal + k];
+              const Eigen::Vector3f dn = dc.axis_u.cross(dc.axis_v);
+              if (std::abs((p - dc.origin).dot(dn)) > 2e-3f) continue;
+              const float a =
+                  decalCoverage(dc, p, footprint / std::max(0.2f, std::abs(d.dot(n)))) * dc.opacity;
+              if (a > 0.0f) albedo += a * (dc.color - albedo);
+            }
+            e = n.z() > 0.5f ? bilinearF(floor_light, p.x() * light_tpm, p.y() * light_tpm) * 0.9f
+                             : (n.z() < -0.5f ? 0.3f * light.ambient : verticalLight(p, n));
+          } else if (surface == 2 && d.z() < 0) {
+            // Floor: concrete x shade, painted lines, text decals.
+            const float slant = std::sqrt(std::max(0.02f, -d.z()));
+            const float fp = footprint / slant;
+            const float c = g.concrete.sampleNearestLevel(p.x() * ctpm, p.y() * ctpm, fp * ctpm);
+            const float shade = bilinearF(L.floor_shade, p.x() * stpm - 0.5f, p.y() * stpm - 0.5f);
+            albedo = g.floor_albedo * (shade * (0.45f + 0.95f * c));
+            const float wpaint =
+                L.paint_white.sample(p.x() * ptpm - 0.5f, p.y() * ptpm - 0.5f, fp * ptpm);
+            if (wpaint > 0.002f)
+              albedo += wpaint * 0.95f * (Eigen::Vector3f(0.86f, 0.86f, 0.84f) - albedo);
+            const float ypaint =
+                L.paint_yellow.sample(p.x() * ptpm - 0.5f, p.y() * ptpm - 0.5f, fp * ptpm);
+            if (ypaint > 0.002f)
+              albedo += ypaint * 0.95f * (Eigen::Vector3f(0.88f, 0.7f, 0.1f) - albedo);
+            for (const int di : cell(decal_grid, p.x(), p.y())) {
+              const Decal& dc = L.floor_decals[di];
+              const float a = decalCoverage(dc, p, fp) * dc.opacity;
+              if (a > 0.0f) albedo += a * (dc.color - albedo);
+            }
+            e = bilinearF(floor_light, p.x() * light_tpm, p.y() * light_tpm);
+          } else if (surface == 2) {
+            // Ceiling with its lamps.
+            albedo = Eigen::Vector3f(0.55f, 0.55f, 0.53f);
+            e = bilinearF(ceiling_light, p.x() * light_tpm, p.y() * light_tpm);
+            for (const int li : cell(lamp_grid, p.x(), p.y())) {
+              const Lamp& l = L.lamps[li];
+              if (std::abs(p.x() - l.center.x()) <= l.half_size.x() &&
+                  std::abs(p.y() - l.center.y()) <= l.half_size.y()) {
+                albedo = Eigen::Vector3f(1.0f, 1.0f, 0.97f);
+                bool on = false;
+                for (const Lamp& lo : lamps_on) on = on || (lo.center == l.center);
+                e = on ? 2.5f : 0.25f;
+              }
+            }
+          } else {
+            // Walls: paint with a coloured band at the bottom.
+            Eigen::Vector3f n = Eigen::Vector3f::Zero();
+            n[surface] = d[surface] > 0 ? -1.0f : 1.0f;
+            const float c = g.concrete.sampleNearestLevel((p.x() + p.y()) * ctpm, p.z() * ctpm,
+                                                          footprint * ctpm);
+            albedo = (p.z() < g.wall_band_height ? g.wall_band : g.wall_albedo) * (0.8f + 0.4f * c);
+            e = verticalLight(p, n);
+          }
+          const float scale = e * exposure * cr.vignette[i] * lut_scale;
+          const float sigma = light.noise_sigma;
+          for (int ch = 0; ch < 3; ++ch) {
+            // BGR output.
+            const int idx = std::min(kLutSize - 1, static_cast<int>(albedo[2 - ch] * scale));
+            out[3 * x + ch] =
+                cv::saturate_cast<uint8_t>(gamma_lut[std::max(0, idx)] + sigma * noise.gauss());
+          }
+        }
+      }
+    });
+
+    if (light.defocus_sigma > 0.0f) cv::GaussianBlur(img, img, cv::Size(0, 0), light.defocus_sigma);
+    if (light.motion_blur_px > 1.0f) {
+      // Side cameras see the scene sweep past horizontally; front and rear mostly expand.
+      const bool side = std::abs(cam.vehicle_from_camera.linear().col(2).y()) > 0.5;
+      const int len = std::max(
+          1, static_cast<int>(std::lround(side ? light.motion_blur_px : light.motion_blur_px / 3)));
+      if (len > 1) cv::blur(img, img, cv::Size(len, 1));
+    }
+    return img;
+  }
+};
+
+Renderer::Renderer(const Garage& garage, int level, const geometry::Rig& rig,
+                   std::shared_ptr<const std::vector<CameraRays>> rays,
+                   const LightingOptions& light)
+    : impl_(std::make_unique<Impl>(garage, level, rig, std::move(rays), light)) {}
+
+Renderer::~Renderer() = default;
+
+const GarageLevel& Renderer::level() const { return impl_->L; }
+
+cv::Mat Renderer::renderCamera(size_t camera, const geometry::Pose2& map_from_vehicle,
+                               uint64_t noise_seed) const {
+  return impl_->renderCamera(camera, map_from_vehicle, noise_seed);
+}
+
+std::vector<cv::Mat> Renderer::render(const geometry::Pose2& map_from_vehicle,
+                                      uint64_t noise_seed) const {
+  std::vector<cv::Mat> out;
+  for (size_t c = 0; c < impl_->rig.cameras.size(); ++c)
+    out.push_back(renderCamera(c, map_from_vehicle, noise_seed));
+  return out;
+}
+
+}  // namespace parkloc::sim

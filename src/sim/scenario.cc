@@ -1,0 +1,244 @@
+#include "sim/scenario.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "common/error.h"
+
+namespace parkloc::sim {
+namespace {
+
+const char* const kFontDirs[] = {"/usr/share/fonts/truetype/dejavu",
+                                 "/usr/share/fonts/truetype/liberation",
+                                 "/usr/share/fonts/truetype/freefont"};
+
+template <typename T>
+void read(const YAML::Node& node, const char* key, T& value, const std::string& where) {
+  const YAML::Node child = node[key];
+  if (!child) return;
+  try {
+    value = child.as<T>();
+  } catch (const YAML::Exception&) {
+    throw InputError(where + ": field '" + key + "' has an invalid value '" + YAML::Dump(child) +
+                     "'");
+  }
+}
+
+DriveSpec parseDrive(const YAML::Node& node, const std::string& where) {
+  DriveSpec d;
+  read(node, "route", d.route, where);
+  read(node, "condition", d.condition, where);
+  read(node, "level", d.level, where);
+  read(node, "duration_s", d.duration_s, where);
+  if (d.route != "tour" && d.route != "park")
+    throw InputError(where + ": field 'route' must be tour or park, not '" + d.route + "'");
+  if (d.condition != "bright" && d.condition != "weak" && d.condition != "blur")
+    throw InputError(where + ": field 'condition' must be bright, weak or blur, not '" +
+                     d.condition + "'");
+  if (!(d.duration_s > 0.0 && d.duration_s < 3600.0))
+    throw InputError(where + ": field 'duration_s' out of range");
+  return d;
+}
+
+GarageSpec parseGarage(const YAML::Node& node, const GarageSpec& defaults,
+                       const std::string& where) {
+  GarageSpec g = defaults;
+  read(node, "name", g.name, where);
+  read(node, "split", g.split, where);
+  read(node, "levels", g.levels, where);
+  read(node, "aisles", g.aisles, where);
+  read(node, "slots_per_row", g.slots_per_row, where);
+  read(node, "slots_per_pillar", g.slots_per_pillar, where);
+  read(node, "slot_width", g.slot_width, where);
+  read(node, "slot_depth", g.slot_depth, where);
+  read(node, "aisle_width", g.aisle_width, where);
+  read(node, "ceiling_height", g.ceiling_height, where);
+  read(node, "pillar_size", g.pillar_size, where);
+  read(node, "number_height", g.number_height, where);
+  read(node, "occupancy", g.occupancy, where);
+  read(node, "worn_share", g.worn_share, where);
+  read(node, "yellow_share", g.yellow_share, where);
+  read(node, "first_number", g.first_number, where);
+  read(node, "fonts", g.fonts, where);
+  if (node["numbering"]) {
+    std::string scheme;
+    read(node, "numbering", scheme, where);
+    g.numbering = numberingSchemeFromString(scheme);
+  }
+  if (const YAML::Node drives = node["drives"]) {
+    g.drives.clear();
+    for (size_t i = 0; i < drives.size(); ++i)
+      g.drives.push_back(parseDrive(drives[i], where + " drive " + std::to_string(i)));
+  }
+  if (g.split != "train" && g.split != "val" && g.split != "test")
+    throw InputError(where + ": field 'split' must be train, val or test, not '" + g.split + "'");
+  if (g.levels.empty()) throw InputError(where + ": field 'levels' is empty");
+  if (g.aisles < 1 || g.aisles > 20) throw InputError(where + ": field 'aisles' out of range");
+  if (g.slots_per_row < 3 || g.slots_per_row > 200)
+    throw InputError(where + ": field 'slots_per_row' out of range");
+  if (g.slots_per_pillar < 1) throw InputError(where + ": field 'slots_per_pillar' out of range");
+  if (!(g.number_height >= 0.1 && g.number_height <= 1.0))
+    throw InputError(where + ": field 'number_height' out of range");
+  if (!(g.occupancy >= 0.0 && g.occupancy <= 1.0))
+    throw InputError(where + ": field 'occupancy' out of range");
+  if (!(g.ceiling_height >= 2.2 && g.ceiling_height <= 6.0))
+    throw InputError(where + ": field 'ceiling_height' out of range");
+  if (!(g.aisle_width >= 4.0 && g.slot_width >= 2.0 && g.slot_depth >= 4.5))
+    throw InputError(where + ": aisle or slot too small");
+  if (g.fonts.empty()) throw InputError(where + ": field 'fonts' is empty");
+  for (const auto& f : g.fonts) resolveFontPath(f);
+  if (g.drives.empty()) throw InputError(where + ": no drives");
+  return g;
+}
+
+GarageSpec makeGarage(const std::string& name, const std::string& split,
+                      std::vector<std::string> levels, int aisles, int slots,
+                      NumberingScheme numbering, int first_number, double number_height,
+                      std::vector<std::string> fonts, std::vector<DriveSpec> drives) {
+  GarageSpec g;
+  g.name = name;
+  g.split = split;
+  g.levels = std::move(levels);
+  g.aisles = aisles;
+  g.slots_per_row = slots;
+  g.numbering = numbering;
+  g.first_number = first_number;
+  g.number_height = number_height;
+  g.fonts = std::move(fonts);
+  g.drives = std::move(drives);
+  return g;
+}
+
+}  // namespace
+
+std::string toString(NumberingScheme scheme) {
+  switch (scheme) {
+    case NumberingScheme::kThreeDigit:
+      return "three_digit";
+    case NumberingScheme::kPlain:
+      return "plain";
+    case NumberingScheme::kLevelDash:
+      return "level_dash";
+    case NumberingScheme::kZoneLetter:
+      return "zone_letter";
+  }
+  return "three_digit";
+}
+
+NumberingScheme numberingSchemeFromString(const std::string& name) {
+  if (name == "three_digit") return NumberingScheme::kThreeDigit;
+  if (name == "plain") return NumberingScheme::kPlain;
+  if (name == "level_dash") return NumberingScheme::kLevelDash;
+  if (name == "zone_letter") return NumberingScheme::kZoneLetter;
+  throw InputError(
+      "scenario: field 'numbering' must be three_digit, plain, level_dash or "
+      "zone_letter, not '" +
+      name + "'");
+}
+
+std::string resolveFontPath(const std::string& font) {
+  namespace fs = std::filesystem;
+  if (font.find('/') != std::string::npos) {
+    if (fs::exists(font)) return font;
+  } else {
+    for (const char* dir : kFontDirs) {
+      const fs::path p = fs::path(dir) / font;
+      if (fs::exists(p)) return p.string();
+    }
+  }
+  throw InputError("scenario: font '" + font + "' not found (looked in /usr/share/fonts/truetype)");
+}
+
+Scenario defaultScenario() {
+  using N = NumberingScheme;
+  const DriveSpec tour_bright{"tour", "bright", "", 22.0};
+  const DriveSpec park_weak{"park", "weak", "", 22.0};
+  const DriveSpec park_bright{"park", "bright", "", 22.0};
+  const DriveSpec tour_weak{"tour", "weak", "", 22.0};
+  const DriveSpec tour_blur{"tour", "blur", "", 22.0};
+  const DriveSpec park_blur{"park", "blur", "", 22.0};
+  Scenario s;
+  s.name = "default";
+  s.seed = 2026;
+  // Train and val share schemes three_digit / level_dash / plain and bold sans fonts; test
+  // uses zone_letter numbers and serif / mono fonts that train never sees.
+  s.garages = {
+      makeGarage("g01", "train", {"B1", "B2"}, 2, 15, N::kThreeDigit, 1, 0.45,
+                 {"DejaVuSans-Bold.ttf", "LiberationSans-Bold.ttf"}, {tour_bright, park_weak}),
+      makeGarage("g02", "train", {"B1"}, 3, 12, N::kLevelDash, 101, 0.40,
+                 {"DejaVuSansCondensed-Bold.ttf"}, {tour_weak, park_bright}),
+      makeGarage("g03", "train", {"B2", "B3"}, 2, 18, N::kThreeDigit, 50, 0.55,
+                 {"FreeSansBold.ttf", "LiberationSansNarrow-Bold.ttf"}, {tour_blur, park_bright}),
+      makeGarage("g04", "train", {"P1"}, 2, 12, N::kLevelDash, 1, 0.35, {"LiberationSans-Bold.ttf"},
+                 {tour_bright, park_blur}),
+      makeGarage("g05", "train", {"B1"}, 3, 15, N::kThreeDigit, 200, 0.50,
+                 {"DejaVuSansMono-Bold.ttf", "DejaVuSans-Bold.ttf"}, {tour_weak, park_weak}),
+      makeGarage("g06", "train", {"B1", "B2"}, 2, 15, N::kLevelDash, 1, 0.45,
+                 {"LiberationMono-Bold.ttf", "FreeSansBold.ttf"}, {tour_bright, park_blur}),
+      makeGarage("g07", "train", {"L2"}, 2, 21, N::kThreeDigit, 300, 0.60,
+                 {"DejaVuSansCondensed-Bold.ttf", "LiberationSansNarrow-Bold.ttf"},
+                 {tour_blur, park_weak}),
+      makeGarage("g08", "val", {"B1"}, 2, 15, N::kPlain, 100, 0.45,
+                 {"DejaVuSans-Bold.ttf", "LiberationSans-Regular.ttf"}, {tour_bright, park_weak}),
+      makeGarage("g09", "val", {"B2"}, 2, 12, N::kLevelDash, 1, 0.40, {"FreeSans.ttf"},
+                 {tour_blur, park_bright}),
+      makeGarage("g10", "test", {"B1", "B2"}, 2, 15, N::kZoneLetter, 1, 0.45,
+                 {"LiberationSerif-Bold.ttf", "FreeMonoBold.ttf", "DejaVuSerif-Bold.ttf"},
+                 {tour_bright, park_weak, tour_blur}),
+  };
+  return s;
+}
+
+Scenario demoScenario() {
+  Scenario s;
+  s.name = "demo";
+  s.seed = 7;
+  s.garages = {makeGarage("demo", "test", {"B2"}, 2, 12, NumberingScheme::kLevelDash, 101, 0.45,
+                          {"DejaVuSans-Bold.ttf"}, {DriveSpec{"tour", "bright", "", 30.0}})};
+  return s;
+}
+
+Scenario parseScenario(const std::string& yaml_text, const std::string& source_name) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(source_name + ": malformed YAML: " + e.what());
+  }
+  if (!root.IsMap()) throw InputError(source_name + ": expected a mapping at the top level");
+  Scenario s;
+  read(root, "name", s.name, source_name);
+  read(root, "seed", s.seed, source_name);
+  read(root, "frame_rate", s.frame_rate, source_name);
+  read(root, "odometry_rate", s.odometry_rate, source_name);
+  read(root, "jpeg_quality", s.jpeg_quality, source_name);
+  if (!(s.frame_rate >= 1.0 && s.frame_rate <= 60.0))
+    throw InputError(source_name + ": field 'frame_rate' out of range");
+  if (!(s.odometry_rate >= s.frame_rate && s.odometry_rate <= 1000.0))
+    throw InputError(source_name + ": field 'odometry_rate' out of range");
+  if (s.jpeg_quality < 10 || s.jpeg_quality > 100)
+    throw InputError(source_name + ": field 'jpeg_quality' out of range");
+  GarageSpec defaults;
+  if (const YAML::Node d = root["garage_defaults"])
+    defaults = parseGarage(d, defaults, source_name + " garage_defaults");
+  const YAML::Node garages = root["garages"];
+  if (!garages || !garages.IsSequence() || garages.size() == 0)
+    throw InputError(source_name + ": field 'garages' missing or empty");
+  for (size_t i = 0; i < garages.size(); ++i)
+    s.garages.push_back(
+        parseGarage(garages[i], defaults, source_name + " garage " + std::to_string(i)));
+  return s;
+}
+
+Scenario loadScenario(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw IoError("cannot open scenario file '" + path + "'");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parseScenario(buffer.str(), path);
+}
+
+}  // namespace parkloc::sim

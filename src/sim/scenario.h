@@ -1,0 +1,72 @@
+#pragma once
+// What `parkloc simulate` generates: garages (layout, numbering, fonts, parked cars) and the
+// drives recorded in each of them. Read from a YAML scenario file or built in code; see
+// docs/DATASET.md for the file format.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace parkloc::sim {
+
+// How parking numbers are written: "098", "117", "B2-117", "A023".
+enum class NumberingScheme { kThreeDigit, kPlain, kLevelDash, kZoneLetter };
+std::string toString(NumberingScheme scheme);
+NumberingScheme numberingSchemeFromString(const std::string& name);  // throws InputError
+
+// One recorded drive. `route` is "tour" (along aisles, through turns) or "park" (a short
+// approach and a reverse parking manoeuvre into a free slot). `condition` is "bright",
+// "weak" (dim lamps, some off, more sensor noise) or "blur" (motion blur and defocus).
+struct DriveSpec {
+  std::string route = "tour";
+  std::string condition = "bright";
+  std::string level;         // empty: the garage's levels in turn
+  double duration_s = 20.0;  // upper bound; a park route ends when parked
+};
+
+struct GarageSpec {
+  std::string name = "garage";
+  std::string split = "train";  // train | val | test
+  std::vector<std::string> levels = {"B1"};
+  int aisles = 2;  // parallel aisles, each with a slot row on both sides
+  int slots_per_row = 15;
+  int slots_per_pillar = 3;  // a pillar between groups of this many slots
+  double slot_width = 2.5;
+  double slot_depth = 5.3;
+  double aisle_width = 6.0;
+  double ceiling_height = 2.8;
+  double pillar_size = 0.6;
+  double number_height = 0.45;  // painted parking numbers, metres of ink height
+  double occupancy = 0.5;       // share of slots with a parked car
+  double worn_share = 0.25;     // share of painted text that is worn or partly erased
+  double yellow_share = 0.3;    // share of painted text in yellow instead of white
+  NumberingScheme numbering = NumberingScheme::kThreeDigit;
+  int first_number = 1;
+  // Font files (names under /usr/share/fonts/truetype/{dejavu,liberation,freefont} or paths).
+  std::vector<std::string> fonts = {"DejaVuSans-Bold.ttf"};
+  std::vector<DriveSpec> drives = {DriveSpec{}};
+};
+
+struct Scenario {
+  std::string name = "scenario";
+  uint64_t seed = 1;
+  double frame_rate = 10.0;     // camera frames per second
+  double odometry_rate = 50.0;  // wheel odometry samples per second
+  int jpeg_quality = 90;
+  std::vector<GarageSpec> garages;
+};
+
+// The shipped dataset: 10 garages (7 train, 2 val, 1 test with numbering schemes and fonts
+// that train never sees), every condition, about 3,000 frame sets. Equals
+// data/scenarios/default.yaml.
+Scenario defaultScenario();
+// One small garage and one ~30 s drive, for `parkloc demo` and quick checks.
+Scenario demoScenario();
+
+// Reads a scenario YAML file; throws InputError naming the file and field.
+Scenario loadScenario(const std::string& path);
+Scenario parseScenario(const std::string& yaml_text, const std::string& source_name);
+
+// Every file name in `fonts` resolved to an existing path; throws InputError.
+std::string resolveFontPath(const std::string& font);
+
+}  // namespace parkloc::sim

@@ -532,6 +532,7 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
       result.warnings.push_back("camera '" + camera.name + "': no spotter and no instances");
     } else {
       ocr::SpotRequest request;
+      request.camera = &camera;
       if (!full_frame) {
         const auto t_regions = Clock::now();
         request.regions =

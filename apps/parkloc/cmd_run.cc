@@ -1,0 +1,108 @@
+// `parkloc run`: localize the vehicle along one sequence folder.
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+
+#include "apps/parkloc/command.h"
+#include "apps/parkloc/eval_common.h"
+#include "io/sequence.h"
+#include "localize/sequence_runner.h"
+
+namespace {
+
+struct RunArgs {
+  std::string sequence;
+  std::string out;
+  std::string calib, map, odometry;
+  std::string video;
+  bool oracle = false, paper = false;
+  bool no_afm = false, no_mcrp = false, no_mcap = false, no_odometry = false;
+  bool no_map_guided = false;
+  int full_frame_interval = 10;
+  size_t max_frames = 0;
+  bool quiet = false;
+  parkloc::app::SpotterArgs spotter;
+};
+
+void run(const RunArgs& a) {
+  using namespace parkloc;
+  const io::Sequence sequence(a.sequence, a.calib, a.map, a.odometry);
+  for (const auto& w : sequence.warnings()) std::cerr << "parkloc: warning: " << w << "\n";
+
+  localize::RunOptions options;
+  options.pipeline = a.paper ? localize::PipelineOptions::paper() : localize::PipelineOptions{};
+  options.pipeline.afm = !a.no_afm;
+  options.pipeline.mcrp = !a.no_mcrp;
+  options.pipeline.mcap = !a.no_mcap;
+  if (a.no_odometry) options.pipeline.use_odometry = false;
+  if (a.no_map_guided) options.pipeline.map_guided = false;
+  if (!a.paper) options.pipeline.full_frame_interval = a.full_frame_interval;
+  options.oracle = a.oracle;
+  options.max_frames = a.max_frames;
+  options.out_dir = a.out;
+  options.video_path = a.video;
+  if (!a.paper && !a.no_odometry && sequence.odometry().empty())
+    std::cerr << "parkloc: warning: no odometry: the filter predicts a random walk\n";
+
+  std::unique_ptr<ocr::TextSpotter> spotter;
+  if (!a.oracle) spotter = app::makeSpotter(a.spotter);
+  app::ProgressLine progress(a.quiet);
+  options.progress = [&](size_t done, size_t total) {
+    progress({"run " + sequence.dir(), done, total});
+  };
+  const auto s = localize::runSequence(sequence, spotter.get(), options);
+  progress.finish();
+
+  std::cout << fmt::format("frames {}  with pose {}  first fix {}\n", s.frames, s.frames_with_pose,
+                           s.first_fix_time ? fmt::format("{:.3f} s", *s.first_fix_time) : "none");
+  std::cout << fmt::format("pose after the first fix on {} of {} frames\n", s.poses_after_first_fix,
+                           s.frames_after_first_fix);
+  std::string statuses;
+  for (const auto& [name, n] : s.status_counts) statuses += fmt::format("  {} {}", name, n);
+  std::cout << "status" << statuses << "\n";
+  if (s.has_truth)
+    std::cout << fmt::format(
+        "position error mean {:.4f} m  p95 {:.4f} m  max {:.4f} m  frames over 0.5 m {}\n"
+        "yaw error mean {:.3f} deg\n",
+        s.mean_position_error_m, s.p95_position_error_m, s.max_position_error_m,
+        s.frames_over_half_metre, s.mean_yaw_error_deg);
+  std::cout << fmt::format("latency per frame set median {:.2f} ms  p99 {:.2f} ms\n",
+                           s.latency_median_ms, s.latency_p99_ms);
+  if (s.frames_with_warnings)
+    std::cout << fmt::format("{} frames with warnings (see frames.jsonl)\n",
+                             s.frames_with_warnings);
+  std::cout << "wrote " << a.out << "/trajectory.tum, " << a.out << "/frames.jsonl"
+            << (a.video.empty() ? "" : ", " + a.video) << "\n";
+}
+
+const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
+  auto args = std::make_shared<RunArgs>();
+  auto* cmd = parent.add_subcommand("run", "Localize the vehicle along a sequence folder");
+  cmd->add_option("sequence", args->sequence, "Sequence folder (parkloc simulate layout)")
+      ->required();
+  cmd->add_option("--out", args->out, "Output folder (trajectory.tum, frames.jsonl)")->required();
+  cmd->add_option("--calib", args->calib, "Rig calibration (default SEQUENCE/calib.yaml)");
+  cmd->add_option("--map", args->map, "HD map (default SEQUENCE/map.geojson)");
+  cmd->add_option("--odometry", args->odometry,
+                  "Wheel odometry CSV (default SEQUENCE/odometry.csv)");
+  cmd->add_option("--video", args->video, "Write an annotated mp4 here");
+  cmd->add_flag("--oracle", args->oracle, "Text from the ground-truth labels (oracle OCR)");
+  cmd->add_flag("--paper", args->paper,
+                "The paper's pipeline: text centre + homography, AFM, MCRP, MCAP, no odometry");
+  cmd->add_flag("--no-afm", args->no_afm, "Turn the box-plot anomaly filter off");
+  cmd->add_flag("--no-mcrp", args->no_mcrp, "One camera per landmark");
+  cmd->add_flag("--no-mcap", args->no_mcap, "Only the nearest landmark");
+  cmd->add_flag("--no-odometry", args->no_odometry, "Ignore wheel odometry");
+  cmd->add_flag("--no-map-guided", args->no_map_guided, "Full-frame spotting on every frame");
+  cmd->add_option("--full-frame-interval", args->full_frame_interval,
+                  "Full-frame spotting every N frames while tracking")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--max-frames", args->max_frames, "Process at most N frame sets (0: all)");
+  cmd->add_flag("--quiet", args->quiet, "No progress line");
+  args->spotter.addTo(cmd);
+  cmd->callback([args] { run(*args); });
+});
+
+}  // namespace

@@ -1,0 +1,182 @@
+#include "localize/sequence_runner.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <opencv2/videoio.hpp>
+
+#include "common/error.h"
+#include "io/tum.h"
+#include "localize/frame_log.h"
+#include "localize/oracle_source.h"
+#include "localize/run_visualization.h"
+
+namespace parkloc::localize {
+namespace fs = std::filesystem;
+namespace {
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const double position = p * static_cast<double>(v.size() - 1);
+  const size_t below = static_cast<size_t>(position);
+  const size_t above = std::min(below + 1, v.size() - 1);
+  return v[below] + (position - static_cast<double>(below)) * (v[above] - v[below]);
+}
+
+}  // namespace
+
+std::optional<geometry::Pose2> truthAt(const std::vector<io::StampedPose>& truth, double t) {
+  if (truth.empty() || t < truth.front().timestamp - 1e-6 || t > truth.back().timestamp + 1e-6)
+    return std::nullopt;
+  const auto after =
+      std::lower_bound(truth.begin(), truth.end(), t,
+                       [](const io::StampedPose& p, double v) { return p.timestamp < v; });
+  if (after == truth.end()) return geometry::Pose2::fromRigid3(truth.back().pose);
+  if (after == truth.begin() || std::abs(after->timestamp - t) < 1e-9)
+    return geometry::Pose2::fromRigid3(after->pose);
+  const auto before = after - 1;
+  const double w = (t - before->timestamp) / (after->timestamp - before->timestamp);
+  const auto a = geometry::Pose2::fromRigid3(before->pose);
+  const auto b = geometry::Pose2::fromRigid3(after->pose);
+  return geometry::Pose2(a.x + w * (b.x - a.x), a.y + w * (b.y - a.y),
+                         a.yaw + w * geometry::wrapAngle(b.yaw - a.yaw));
+}
+
+std::vector<io::OdometrySample> odometryBetween(const std::vector<io::OdometrySample>& all,
+                                                double after, double until) {
+  std::vector<io::OdometrySample> out;
+  for (const auto& s : all)
+    if (s.timestamp > after && s.timestamp <= until) out.push_back(s);
+  return out;
+}
+
+RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
+                       const RunOptions& options) {
+  if (!options.oracle && !spotter)
+    throw InputError("run: no text spotter given and --oracle not set");
+  RunSummary summary;
+  summary.sequence_warnings = sequence.warnings();
+  if (options.out_dir.empty()) throw InputError("run: --out is empty");
+  std::error_code ec;
+  fs::create_directories(options.out_dir, ec);
+  if (ec) throw IoError(fmt::format("run: cannot create {}: {}", options.out_dir, ec.message()));
+  const std::string frames_path = (fs::path(options.out_dir) / "frames.jsonl").string();
+  std::ofstream frames_log(frames_path);
+  if (!frames_log) throw IoError(fmt::format("run: cannot write {}", frames_path));
+
+  Pipeline pipeline(sequence.rig(), sequence.map(), options.pipeline, spotter);
+  const auto& timestamps = sequence.timestamps();
+  size_t count = timestamps.size();
+  if (options.max_frames > 0) count = std::min(count, options.max_frames);
+  if (count == 0) throw InputError(fmt::format("run: sequence {} has no frames", sequence.dir()));
+  const bool need_images = !options.oracle || !options.video_path.empty();
+
+  // Video set-up.
+  cv::VideoWriter video;
+  BirdsEyeView bev;
+  std::vector<geometry::Pose2> truth_poses;
+  for (const auto& p : sequence.groundTruth())
+    truth_poses.push_back(geometry::Pose2::fromRigid3(p.pose));
+  if (!options.video_path.empty()) {
+    std::vector<double> intervals;
+    for (size_t i = 1; i < count; ++i) intervals.push_back(timestamps[i] - timestamps[i - 1]);
+    const double interval = percentile(intervals, 0.5);
+    const double fps = interval > 1e-3 ? std::clamp(1.0 / interval, 1.0, 60.0) : 10.0;
+    bev = BirdsEyeView::fitting(sequence.map(), truth_poses);
+    const cv::Size size(2 * 640 + bev.size_px, 800);
+    if (!video.open(options.video_path, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), fps, size))
+      throw IoError(fmt::format("run: cannot open video {} for writing", options.video_path));
+  }
+
+  std::vector<io::StampedPose> trajectory;
+  std::vector<double> latencies, errors, yaw_errors;
+  std::vector<geometry::Pose2> estimated, truth_so_far;
+  double previous_time = -std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < count; ++i) {
+    const double t = timestamps[i];
+    FrameInput input;
+    input.timestamp = t;
+    input.odometry = odometryBetween(sequence.odometry(), previous_time, t);
+    previous_time = t;
+    std::vector<std::string> load_warnings;
+    std::vector<cv::Mat> images;
+    for (const auto& camera : sequence.rig().cameras) {
+      CameraInput c;
+      c.camera = camera.name;
+      if (need_images) {
+        std::string why;
+        c.image = sequence.loadImage(i, camera.name, &why);
+        if (c.image.empty() && !why.empty()) load_warnings.push_back(why);
+      }
+      images.push_back(c.image);
+      if (options.oracle) {
+        const auto labels = sequence.loadLabels(i, camera.name);
+        c.instances = labels ? oracleInstances(*labels) : std::vector<ocr::TextInstance>{};
+        if (!labels)
+          load_warnings.push_back(
+              fmt::format("camera '{}': no labels at {}", camera.name, io::timestampStem(t)));
+      }
+      if (!c.image.empty() || c.instances) input.cameras.push_back(std::move(c));
+    }
+    FrameResult result = pipeline.process(input);
+    result.warnings.insert(result.warnings.begin(), load_warnings.begin(), load_warnings.end());
+    frames_log << frameResultToJson(result) << '\n';
+
+    ++summary.frames;
+    ++summary.status_counts[toString(result.status)];
+    if (!result.warnings.empty()) ++summary.frames_with_warnings;
+    latencies.push_back(result.timings.total_ms);
+    if (result.has_pose && !summary.first_fix_time) summary.first_fix_time = t;
+    if (summary.first_fix_time) {
+      ++summary.frames_after_first_fix;
+      if (result.has_pose) ++summary.poses_after_first_fix;
+    }
+    const auto truth = truthAt(sequence.groundTruth(), t);
+    if (truth) truth_so_far.push_back(*truth);
+    if (result.has_pose) {
+      ++summary.frames_with_pose;
+      io::StampedPose stamped;
+      stamped.timestamp = t;
+      stamped.pose = result.pose.toRigid3();
+      trajectory.push_back(stamped);
+      estimated.push_back(result.pose);
+      if (truth) {
+        errors.push_back((result.pose.translation() - truth->translation()).norm());
+        yaw_errors.push_back(std::abs(geometry::wrapAngle(result.pose.yaw - truth->yaw)) * 180.0 /
+                             M_PI);
+      }
+    }
+    if (video.isOpened()) {
+      VisualizationInput vis;
+      vis.result = &result;
+      vis.images = images;
+      vis.estimated_so_far = estimated;
+      vis.truth_so_far = truth_so_far;
+      vis.truth_now = truth;
+      video.write(drawRunFrame(vis, sequence.map(), bev));
+    }
+    if (options.progress) options.progress(i + 1, count);
+  }
+  io::saveTum(trajectory, (fs::path(options.out_dir) / "trajectory.tum").string());
+
+  if (!errors.empty()) {
+    summary.has_truth = true;
+    double sum = 0.0, yaw_sum = 0.0;
+    for (double e : errors) sum += e;
+    for (double e : yaw_errors) yaw_sum += e;
+    summary.mean_position_error_m = sum / errors.size();
+    summary.p95_position_error_m = percentile(errors, 0.95);
+    summary.max_position_error_m = *std::max_element(errors.begin(), errors.end());
+    summary.mean_yaw_error_deg = yaw_sum / yaw_errors.size();
+    summary.frames_over_half_metre = static_cast<size_t>(
+        std::count_if(errors.begin(), errors.end(), [](double e) { return e > 0.5; }));
+  }
+  summary.latency_median_ms = percentile(latencies, 0.5);
+  summary.latency_p99_ms = percentile(latencies, 0.99);
+  return summary;
+}
+
+}  // namespace parkloc::localize

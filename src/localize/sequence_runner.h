@@ -1,0 +1,59 @@
+#pragma once
+// `parkloc run` as a library call: feeds a sequence folder frame set by frame set through
+// the pipeline and writes trajectory.tum, frames.jsonl and optionally an annotated video.
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/sequence.h"
+#include "localize/pipeline.h"
+#include "ocr/text_spotter.h"
+
+namespace parkloc::localize {
+
+struct RunOptions {
+  PipelineOptions pipeline;
+  bool oracle = false;     // instances from the ground-truth labels instead of a spotter
+  size_t max_frames = 0;   // 0: all frame sets
+  std::string out_dir;     // receives trajectory.tum and frames.jsonl (created)
+  std::string video_path;  // annotated mp4; empty: none
+  std::function<void(size_t done, size_t total)> progress;
+};
+
+struct RunSummary {
+  size_t frames = 0;
+  size_t frames_with_pose = 0;
+  std::optional<double> first_fix_time;
+  size_t frames_after_first_fix = 0;  // including the first fix
+  size_t poses_after_first_fix = 0;
+  std::map<std::string, size_t> status_counts;
+  size_t frames_with_warnings = 0;
+  std::vector<std::string> sequence_warnings;  // from reading the folder
+
+  // Against poses.tum, over the frames with a pose (empty without ground truth).
+  bool has_truth = false;
+  double mean_position_error_m = 0.0;
+  double p95_position_error_m = 0.0;
+  double max_position_error_m = 0.0;
+  double mean_yaw_error_deg = 0.0;
+  size_t frames_over_half_metre = 0;
+
+  // Per frame set, the pipeline's total (image decoding excluded).
+  double latency_median_ms = 0.0;
+  double latency_p99_ms = 0.0;
+};
+
+// The ground-truth pose at time t, linearly interpolated; empty outside the trajectory.
+std::optional<geometry::Pose2> truthAt(const std::vector<io::StampedPose>& truth, double t);
+
+// The odometry samples with timestamp in (after, until].
+std::vector<io::OdometrySample> odometryBetween(const std::vector<io::OdometrySample>& all,
+                                                double after, double until);
+
+// Throws InputError (oracle without labels, spotter missing) and IoError (outputs).
+RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
+                       const RunOptions& options);
+
+}  // namespace parkloc::localize

@@ -23,8 +23,14 @@ int main(int argc, char** argv) {
   for (const auto& setup : parkloc::app::registry()) setup(app);
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
+  } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // Usage errors: one line, exit 2 (as getopt-style tools do); --help explains more.
+    std::cerr << "parkloc: usage error: " << e.what() << " (see parkloc --help)\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "parkloc: error: " << e.what() << "\n";
     return 1;

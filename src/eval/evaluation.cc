@@ -124,6 +124,15 @@ std::vector<VariantSpec> variantSpecs(const EvaluationOptions& o, bool have_spot
       specs.push_back(s);
     }
   }
+  if (o.paper_own_spotting && have_spotter) {
+    VariantSpec s;
+    s.key = "paper_spotting";
+    s.title = "OCR-RTPS (paper pipeline, spotting itself)";
+    s.source = Source::kSpotter;
+    s.options = localize::PipelineOptions::paper();
+    s.afm = s.mcrp = s.mcap = true;
+    specs.push_back(s);
+  }
   if (o.oracle) {
     specs.push_back({"oracle", "parkloc on ground-truth text (oracle OCR)", Source::kOracle,
                      o.parkloc_options});
@@ -471,7 +480,8 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
   }
   {
     std::vector<std::pair<std::string, std::map<std::string, TrajectoryError>>> per_variant;
-    for (const std::string& key : {std::string("parkloc"), paper_key, std::string("oracle")}) {
+    for (const std::string& key : {std::string("parkloc"), paper_key, std::string("paper_spotting"),
+                                   std::string("oracle")}) {
       const auto it = by_key.find(key);
       if (it != by_key.end())
         per_variant.emplace_back(it->second->spec.title, conditionErrors(*it->second));
@@ -480,12 +490,21 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
   }
   {
     std::vector<VariantResult> rows;
-    for (const std::string& key :
-         {std::string("parkloc"), paper_key, std::string("odometry_only"), std::string("oracle")}) {
+    for (const std::string& key : {std::string("parkloc"), paper_key, std::string("paper_spotting"),
+                                   std::string("odometry_only"), std::string("oracle")}) {
       if (auto r = result(key)) rows.push_back(*r);
     }
     report.tables.push_back(table5(rows));
   }
+  {
+    std::vector<VariantResult> rows;
+    for (const std::string& key : {std::string("parkloc"), paper_key, std::string("paper_spotting"),
+                                   std::string("oracle")}) {
+      if (auto r = result(key)) rows.push_back(*r);
+    }
+    report.tables.push_back(latencyTable(rows));
+  }
+  for (const VariantTally& t : tallies) report.variants.push_back(toResult(t));
   report.notes.push_back(fmt::format(
       "{} sequences, {} frame sets. Position error: evo-style APE (translation, no alignment, "
       "association by timestamp within 10 ms) over frames with a pose.",

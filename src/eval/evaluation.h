@@ -35,8 +35,11 @@ OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSp
 struct EvaluationOptions {
   bool parkloc = true;         // the full pipeline, spotting itself (map-guided); needs a spotter
   bool paper_ablation = true;  // the 8 AFM / MCRP / MCAP variants; needs a spotter
-  bool oracle = true;          // the full pipeline on ground-truth text boxes
-  bool odometry_only = true;   // dead reckoning from the true first pose
+  // The paper's pipeline (every module on) spotting by itself, full frame on all cameras
+  // every frame, for latency (`parkloc bench`); runs beside or instead of the ablation.
+  bool paper_own_spotting = false;
+  bool oracle = true;                         // the full pipeline on ground-truth text boxes
+  bool odometry_only = true;                  // dead reckoning from the true first pose
   size_t max_frames_per_sequence = 0;         // 0: all
   size_t trajectory_views = 2;                // drives drawn in the report
   localize::PipelineOptions parkloc_options;  // for parkloc and the oracle

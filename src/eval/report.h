@@ -54,9 +54,10 @@ struct TrajectoryView {
 
 struct EvaluationReport {
   std::string title = "parkloc evaluation";
-  std::string dataset;  // what was evaluated (folder, split)
-  std::string command;  // the command line that produced it
-  VariantResult main;   // the headline figures (the full parkloc pipeline)
+  std::string dataset;                  // what was evaluated (folder, split)
+  std::string command;                  // the command line that produced it
+  VariantResult main;                   // the headline figures (the full parkloc pipeline)
+  std::vector<VariantResult> variants;  // every configuration that ran
   std::optional<OcrEvaluation> ocr;
   std::vector<TrajectoryView> trajectories;
   std::vector<Table> tables;

@@ -184,4 +184,21 @@ Table table5(const std::vector<VariantResult>& variants) {
   return t;
 }
 
+Table latencyTable(const std::vector<VariantResult>& variants) {
+  Table t;
+  t.key = "latency";
+  t.title = "Latency per four-camera frame set and per stage (ms)";
+  t.caption = "Wall-clock time on this machine; a stage that did not run in a frame counts 0.";
+  t.header = {"Method", "Stage", "Median", "p95", "p99", "Max", "Mean"};
+  for (const VariantResult& v : variants) {
+    auto row = [&](const std::string& stage, const Summary& s) {
+      t.rows.push_back({v.title, stage, ms(s, &Summary::median), ms(s, &Summary::p95),
+                        ms(s, &Summary::p99), ms(s, &Summary::max), ms(s, &Summary::mean)});
+    };
+    for (const auto& [stage, s] : v.latency.stage_ms) row(stage, s);
+    row("total", v.latency.total_ms);
+  }
+  return t;
+}
+
 }  // namespace parkloc::eval

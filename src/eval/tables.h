@@ -48,4 +48,7 @@ Table table8(
 
 Table table5(const std::vector<VariantResult>& variants);
 
+// Latency per stage (median / p95 / p99 / max, ms) of each variant, and the whole frame set.
+Table latencyTable(const std::vector<VariantResult>& variants);
+
 }  // namespace parkloc::eval

@@ -1,0 +1,136 @@
+// parkloc eval DATASET      : the paper's tables 3, 5, 8 and 10 and the report.
+// parkloc eval ocr DATASET  : table 3 only (text spotting), printed and as JSON.
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iostream>
+
+#include "apps/parkloc/command.h"
+#include "apps/parkloc/eval_common.h"
+#include "common/error.h"
+#include "eval/dataset.h"
+#include "eval/evaluation.h"
+#include "eval/report.h"
+#include "eval/tables.h"
+
+namespace {
+
+using namespace parkloc;
+
+struct EvalArgs {
+  std::string dataset;
+  std::string split = "test";
+  std::string out = "parkloc-eval";
+  std::string json;
+  int max_frames = 0;
+  bool no_paper = false;
+  bool no_oracle = false;
+  bool no_lexicon = false;
+  bool quiet = false;
+  app::SpotterArgs spotter;
+  std::string command_line;
+};
+
+void runEvalOcr(const EvalArgs& a) {
+  const std::vector<std::string> sequences = eval::splitSequences(a.dataset, a.split);
+  auto spotter = app::makeSpotter(a.spotter);
+  app::ProgressLine progress(a.quiet);
+  eval::OcrRunOptions options;
+  options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
+  options.use_lexicon = !a.no_lexicon;
+  options.progress = [&](const eval::Progress& p) { progress(p); };
+  const eval::OcrEvaluation result = eval::evaluateOcr(sequences, *spotter, options);
+  progress.finish();
+  std::cout << fmt::format("{} images from {} sequences ({} split of {}), engine {}\n\n",
+                           result.images, sequences.size(), a.split, a.dataset, spotter->name());
+  std::cout << eval::tableMarkdown(eval::table3(result, std::nullopt));
+  std::cout << eval::tableMarkdown(eval::table3Conditions(result));
+  const eval::OcrCounts numbers = result.by_class.count("parking_number")
+                                      ? result.by_class.at("parking_number")
+                                      : eval::OcrCounts{};
+  std::cout << fmt::format(
+      "parking numbers: detection F {:.4f}, recognition {:.4f} (raw {:.4f}), classification "
+      "{:.4f}; {:.2f} images/s ({:.1f} ms per image)\n",
+      numbers.fMeasure(), numbers.recognitionAccuracy(), numbers.recognitionRawAccuracy(),
+      numbers.classificationAccuracy(), result.imagesPerSecond(),
+      result.images ? 1000.0 * result.spotting_seconds / result.images : 0.0);
+  if (!a.json.empty()) {
+    nlohmann::json j = eval::ocrEvaluationJson(result);
+    j["dataset"] = a.dataset;
+    j["split"] = a.split;
+    j["engine"] = spotter->name();
+    std::ofstream out(a.json);
+    if (!out) throw IoError(a.json + ": cannot open for writing");
+    out << j.dump(2) << "\n";
+    std::cout << "wrote " << a.json << "\n";
+  }
+}
+
+void runEval(const EvalArgs& a) {
+  const std::vector<std::string> sequences = eval::splitSequences(a.dataset, a.split);
+  auto spotter = app::makeSpotter(a.spotter);
+  app::ProgressLine progress(a.quiet);
+  eval::EvaluationOptions options;
+  options.paper_ablation = !a.no_paper;
+  options.oracle = !a.no_oracle;
+  options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
+  options.progress = [&](const eval::Progress& p) { progress(p); };
+  options.title = "parkloc evaluation: " + a.split + " split";
+  options.dataset =
+      a.dataset + " (" + a.split + ", " + std::to_string(sequences.size()) + " sequences)";
+  options.command = a.command_line;
+  const eval::EvaluationReport report = eval::evaluateSequences(sequences, spotter.get(), options);
+  progress.finish();
+  eval::writeReport(report, a.out);
+  for (const eval::Table& t : report.tables) std::cout << eval::tableMarkdown(t);
+  const eval::VariantResult& m = report.main;
+  std::cout << fmt::format(
+      "{}: {} frame sets, {} with a pose; position error mean {:.1f} cm, p95 {:.1f} cm; yaw "
+      "error mean {:.2f} deg; latency median {:.1f} ms, p99 {:.1f} ms\n",
+      m.title, m.frames, m.frames_with_pose, m.error.position_m.mean * 100.0,
+      m.error.position_m.p95 * 100.0, m.error.abs_yaw_deg.mean, m.latency.total_ms.median,
+      m.latency.total_ms.p99);
+  std::cout << "wrote " << a.out << "/report.html, results.json, results.md\n";
+}
+
+const bool registered = app::registerCommand([](CLI::App& parent) {
+  auto args = std::make_shared<EvalArgs>();
+  auto* cmd = parent.add_subcommand(
+      "eval", "Evaluate on a dataset split: the paper's tables 3, 5, 8, 10 and a report");
+  cmd->add_option("dataset", args->dataset, "Dataset folder (with splits.json) or one sequence");
+  cmd->add_option("--split", args->split, "train | val | test")->capture_default_str();
+  cmd->add_option("--out", args->out, "Report folder")->capture_default_str();
+  cmd->add_option("--max-frames", args->max_frames, "At most N frame sets per sequence (0: all)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--no-paper", args->no_paper, "Skip the paper pipeline and its ablation");
+  cmd->add_flag("--no-oracle", args->no_oracle, "Skip the oracle-OCR variant");
+  cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
+  args->spotter.addTo(cmd);
+
+  auto ocr_args = std::make_shared<EvalArgs>();
+  auto* ocr_cmd =
+      cmd->add_subcommand("ocr", "Text spotting metrics (the paper's Table 3) on a dataset split");
+  ocr_cmd->add_option("dataset", ocr_args->dataset, "Dataset folder (with splits.json)")
+      ->required();
+  ocr_cmd->add_option("--split", ocr_args->split, "train | val | test")->capture_default_str();
+  ocr_cmd->add_option("--json", ocr_args->json, "Write every metric as JSON");
+  ocr_cmd->add_option("--max-frames", ocr_args->max_frames, "At most N frame sets per sequence")
+      ->check(CLI::NonNegativeNumber);
+  ocr_cmd->add_flag("--no-lexicon", ocr_args->no_lexicon, "Free reading only");
+  ocr_cmd->add_flag("--quiet", ocr_args->quiet, "No progress on stderr");
+  ocr_args->spotter.addTo(ocr_cmd);
+  ocr_cmd->callback([ocr_args] { runEvalOcr(*ocr_args); });
+
+  cmd->callback([args, ocr_cmd] {
+    if (ocr_cmd->parsed()) return;
+    if (args->dataset.empty()) throw CLI::RequiredError("dataset");
+    args->command_line =
+        fmt::format("parkloc eval {} --split {}{}{}{}", args->dataset, args->split,
+                    args->out.empty() ? "" : " --out " + args->out,
+                    args->max_frames ? fmt::format(" --max-frames {}", args->max_frames) : "",
+                    args->no_paper ? " --no-paper" : "");
+    runEval(*args);
+  });
+});
+
+}  // namespace

@@ -1,0 +1,75 @@
+#pragma once
+// Shared by `parkloc eval`, `demo` and `bench`: the PP-OCRv4 spotter with the shipped models
+// and a progress line on stderr.
+#include <fmt/format.h>
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "apps/parkloc/command.h"
+#include "eval/evaluation.h"
+#include "ocr/ppocr/pp_ocr_spotter.h"
+
+namespace parkloc::app {
+
+struct SpotterArgs {
+  std::string models = PARKLOC_MODEL_DIR;
+  std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
+
+  void addTo(CLI::App* cmd) {
+    cmd->add_option("--models", models, "Folder with the PP-OCRv4 ONNX models")
+        ->capture_default_str();
+    cmd->add_option("--classifier", classifier, "Text classifier (YAML); '' for none")
+        ->capture_default_str();
+  }
+};
+
+inline std::unique_ptr<ocr::TextSpotter> makeSpotter(const SpotterArgs& args) {
+  ocr::PpOcrOptions options;
+  options.models = ocr::PpOcrModelPaths::inDirectory(args.models);
+  if (!args.classifier.empty() && std::filesystem::exists(args.classifier)) {
+    options.models.classifier = args.classifier;
+  }
+  return std::make_unique<ocr::PpOcrSpotter>(options);
+}
+
+// "\r<stage> [#####.....] 12/40 frame sets, 3 s, eta 7 s" on stderr, a new line per stage.
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool quiet = false) : quiet_(quiet) {}
+  ~ProgressLine() { finish(); }
+
+  void operator()(const eval::Progress& p) {
+    if (quiet_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (p.stage != stage_) {
+      finish();
+      stage_ = p.stage;
+      start_ = now;
+    }
+    const double fraction = p.total ? static_cast<double>(p.done) / p.total : 1.0;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double eta = fraction > 0 ? elapsed / fraction - elapsed : 0.0;
+    const int width = 30, filled = static_cast<int>(fraction * width);
+    std::cerr << fmt::format("\r{} [{}{}] {}/{} frame sets, {:.0f} s, eta {:.0f} s   ", stage_,
+                             std::string(filled, '#'), std::string(width - filled, '.'), p.done,
+                             p.total, elapsed, eta)
+              << std::flush;
+    open_ = true;
+  }
+  void finish() {
+    if (open_) std::cerr << "\n";
+    open_ = false;
+  }
+
+ private:
+  bool quiet_ = false;
+  bool open_ = false;
+  std::string stage_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace parkloc::app

@@ -323,13 +323,8 @@ void buildLevel(Builder& b, int level_index) {
                                                      {0.55f, 0.07f, 0.06f},
                                                      {0.12f, 0.25f, 0.15f},
                                                      {0.6f, 0.55f, 0.45f}});
-          Box tyres;
-          tyres.lo = Eigen::Vector3f(float(cx - wid / 2 + 0.05), float(ylo + 0.6), 0.0f);
-          tyres.hi = Eigen::Vector3f(float(cx + wid / 2 - 0.05), float(yhi - 0.6), 0.3f);
-          tyres.albedo = Eigen::Vector3f(0.03f, 0.03f, 0.03f);
-          tyres.material = Material::kCarDark;
           Box body;
-          body.lo = Eigen::Vector3f(float(cx - wid / 2), float(ylo), 0.22f);
+          body.lo = Eigen::Vector3f(float(cx - wid / 2), float(ylo), 0.0f);
           body.hi = Eigen::Vector3f(float(cx + wid / 2), float(yhi), float(height * 0.6));
           body.albedo = paint;
           body.material = Material::kCarBody;
@@ -367,7 +362,6 @@ void buildLevel(Builder& b, int level_index) {
                                      float(height));
           cabin.albedo = paint * 0.35f + Eigen::Vector3f(0.04f, 0.05f, 0.06f);
           cabin.material = Material::kCarGlass;
-          L.boxes.push_back(tyres);
           L.boxes.push_back(body);
           L.boxes.push_back(cabin);
           markOccupancy(body, 1.0f);

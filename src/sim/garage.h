@@ -14,7 +14,8 @@
 
 namespace parkloc::sim {
 
-enum class Material : uint8_t { kPillar, kCarBody, kCarGlass, kCarDark, kWall };
+// kCarBody boxes reach the floor: the renderer draws wheels, sills and lights on them.
+enum class Material : uint8_t { kPillar, kCarBody, kCarGlass, kWall };
 
 // An axis-aligned box; its decals (pillar text, plates) are box_decals[first_decal, +count).
 struct Box {

@@ -30,8 +30,13 @@ float MipTexture::bilinear(int level, float u, float v) const {
   int x1 = x0 + 1, y1 = y0 + 1;
   const int w = m.cols, h = m.rows;
   if (wrap_) {
-    x0 = ((x0 % w) + w) % w;
-    y0 = ((y0 % h) + h) % h;
+    if ((w & (w - 1)) == 0 && (h & (h - 1)) == 0) {  // power of two: masks, no division
+      x0 &= w - 1;
+      y0 &= h - 1;
+    } else {
+      x0 = ((x0 % w) + w) % w;
+      y0 = ((y0 % h) + h) % h;
+    }
     x1 = x0 + 1 == w ? 0 : x0 + 1;
     y1 = y0 + 1 == h ? 0 : y0 + 1;
   } else {

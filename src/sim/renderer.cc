@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
@@ -39,14 +40,32 @@ struct XorShift {
     s ^= s << 17;
     return static_cast<uint32_t>(s >> 32);
   }
-  // Approximately standard normal: the sum of four uniforms, rescaled.
-  float gauss() {
-    const uint32_t a = next(), b = next();
-    const float sum = static_cast<float>(a & 0xffff) + static_cast<float>(a >> 16) +
-                      static_cast<float>(b & 0xffff) + static_cast<float>(b >> 16);
-    return (sum * (1.0f / 65536.0f) - 2.0f) * 1.7320508f;
+  // Three approximately standard normal values (sums of two uniforms, unit variance).
+  void gauss3(float out[3]) {
+    const uint32_t a = next(), b = next(), c = next();
+    const float k = 2.4494897f / 65536.0f;
+    out[0] = (static_cast<float>(a & 0xffff) + static_cast<float>(a >> 16) - 65535.0f) * k;
+    out[1] = (static_cast<float>(b & 0xffff) + static_cast<float>(b >> 16) - 65535.0f) * k;
+    out[2] = (static_cast<float>(c & 0xffff) + static_cast<float>(c >> 16) - 65535.0f) * k;
   }
 };
+
+// Fisheye projection without the field-of-view limit, for culling: points past the model's
+// last angle land beyond the image border instead of failing, so a box that is partly behind
+// the camera still gets a tight bound. Empty only near the axis pointing backwards.
+std::optional<Eigen::Vector2d> projectForCulling(const geometry::CameraModel& m, const Eigen::Vector3d& p) {
+  if (m.type != geometry::CameraModelType::kFisheye) return m.project(p);
+  const double r = p.head<2>().norm();
+  if (r < 1e-12) return p.z() > 0 ? std::optional<Eigen::Vector2d>(Eigen::Vector2d(m.cx, m.cy)) : std::nullopt;
+  const double theta = std::atan2(r, p.z());
+  if (theta > 2.9) return std::nullopt;
+  const double t = std::min(theta, m.max_theta);
+  const double t2 = t * t;
+  const auto& k = m.distortion;
+  // Past max_theta continue linearly with the slope there (the model is monotonic up to it).
+  const double td = t * (1 + t2 * (k[0] + t2 * (k[1] + t2 * (k[2] + t2 * k[3])))) + (theta - t) * 1.2;
+  return Eigen::Vector2d(m.fx * p.x() / r * td + m.cx, m.fy * p.y() / r * td + m.cy);
+}
 
 }  // namespace
 
@@ -122,7 +141,14 @@ struct Renderer::Impl {
   geometry::Rig rig;
   std::shared_ptr<const std::vector<CameraRays>> rays;
   LightingOptions light;
-  std::vector<Lamp> lamps_on, lamps_off;
+  std::vector<Lamp> lamps_on;
+  std::vector<uint8_t> lamp_is_on;  // per lamp of the level
+  // Irradiance on vertical surfaces facing +x, -x, +y, -y at 1 m height (4 texels per metre).
+  cv::Mat vertical_light[4];
+  static constexpr float kVerticalTpm = 4.0f;
+  // Cells (0.5 m) with any white / yellow paint nearby: floor pixels elsewhere skip the lookup.
+  std::vector<uint8_t> paint_mask;
+  int paint_mask_w = 0, paint_mask_h = 0;
   // Floor irradiance (10 texels per metre) and ceiling brightness.
   cv::Mat floor_light, ceiling_light;
   float light_tpm = 10.0f;
@@ -138,8 +164,11 @@ struct Renderer::Impl {
       : g(garage), L(garage.levels.at(level)), rig(r), rays(std::move(ry)), light(li) {
     std::mt19937_64 rng(light.lamp_seed);
     std::uniform_real_distribution<double> uni(0.0, 1.0);
-    for (const Lamp& lamp : L.lamps)
-      (uni(rng) < light.lamps_on_share ? lamps_on : lamps_off).push_back(lamp);
+    for (const Lamp& lamp : L.lamps) {
+      const bool on = uni(rng) < light.lamps_on_share;
+      lamp_is_on.push_back(on);
+      if (on) lamps_on.push_back(lamp);
+    }
     const float H = static_cast<float>(g.ceiling_height);
     const int lw = static_cast<int>(std::ceil(g.size.x() * light_tpm)) + 1;
     const int lh = static_cast<int>(std::ceil(g.size.y() * light_tpm)) + 1;
@@ -162,6 +191,32 @@ struct Renderer::Impl {
           ceiling_light.at<float>(y, x) = c;
         }
     });
+    const int vw = static_cast<int>(std::ceil(g.size.x() * kVerticalTpm)) + 1;
+    const int vh = static_cast<int>(std::ceil(g.size.y() * kVerticalTpm)) + 1;
+    const Eigen::Vector2f normals[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    for (int k = 0; k < 4; ++k) {
+      vertical_light[k].create(vh, vw, CV_32F);
+      for (int y = 0; y < vh; ++y)
+        for (int x = 0; x < vw; ++x)
+          vertical_light[k].at<float>(y, x) =
+              verticalLightExact(Eigen::Vector3f(x / kVerticalTpm, y / kVerticalTpm, 1.0f), normals[k]);
+    }
+    paint_mask_w = static_cast<int>(std::ceil(g.size.x() * 2.0)) + 1;
+    paint_mask_h = static_cast<int>(std::ceil(g.size.y() * 2.0)) + 1;
+    paint_mask.assign(static_cast<size_t>(paint_mask_w) * paint_mask_h, 0);
+    for (const auto* tex : {&L.paint_white, &L.paint_yellow}) {
+      const float tpm = static_cast<float>(g.paint_texels_per_metre);
+      for (int y = 0; y < tex->height(); y += 2)
+        for (int x = 0; x < tex->width(); x += 2) {
+          if (tex->sample(float(x), float(y), 1.0f) <= 0.0f) continue;
+          const int cx = static_cast<int>(x / tpm * 2.0f), cy = static_cast<int>(y / tpm * 2.0f);
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+              const int mx = std::clamp(cx + dx, 0, paint_mask_w - 1), my = std::clamp(cy + dy, 0, paint_mask_h - 1);
+              paint_mask[static_cast<size_t>(my) * paint_mask_w + mx] = 1;
+            }
+        }
+    }
     grid_w = static_cast<int>(std::ceil(g.size.x())) + 1;
     grid_h = static_cast<int>(std::ceil(g.size.y())) + 1;
     decal_grid.resize(static_cast<size_t>(grid_w) * grid_h);
@@ -221,8 +276,9 @@ struct Renderer::Impl {
                                         footprint_m * d.texels_per_metre);
   }
 
-  // Irradiance on a vertical surface with normal n at p, from the lit lamps nearby.
-  float verticalLight(const Eigen::Vector3f& p, const Eigen::Vector3f& n) const {
+  // Irradiance on a vertical surface with horizontal normal n at p, from the lit lamps nearby
+  // and light bounced from the floor.
+  float verticalLightExact(const Eigen::Vector3f& p, const Eigen::Vector2f& n) const {
     const float H = static_cast<float>(g.ceiling_height);
     float e = 0.8f * light.ambient;
     const float dz = H - p.z();
@@ -231,12 +287,47 @@ struct Renderer::Impl {
       const float r2 = dx * dx + dy * dy;
       if (r2 > 400.0f) continue;
       const float d2 = r2 + dz * dz;
-      const float facing = n.x() * dx + n.y() * dy;
+      const float facing = n.x() * dx + n.y() * dy;  // horizontal normal
       if (facing <= 0.0f) continue;
       e += light.lamp_power * facing * dz / (d2 * d2);
     }
-    // Light bounced from the floor.
     return e + 0.15f * bilinearF(floor_light, p.x() * light_tpm, p.y() * light_tpm);
+  }
+  // The precomputed maps above, for axis-aligned faces; a little brighter near the ceiling.
+  float verticalLight(const Eigen::Vector3f& p, const Eigen::Vector3f& n) const {
+    const int k = n.x() > 0.5f ? 0 : n.x() < -0.5f ? 1 : n.y() > 0.5f ? 2 : 3;
+    const float h = std::clamp(p.z() / static_cast<float>(g.ceiling_height), 0.0f, 1.0f);
+    return bilinearF(vertical_light[k], p.x() * kVerticalTpm, p.y() * kVerticalTpm) * (0.8f + 0.5f * h * h);
+  }
+  // A parked car's lower box (cars stand along y): wheels on the sides, a dark sill and
+  // underbody, lamps at the ends.
+  static Eigen::Vector3f carBodyAlbedo(const Box& b, const Eigen::Vector3f& p, const Eigen::Vector3f& n) {
+    const Eigen::Vector3f dark(0.025f, 0.025f, 0.028f);
+    if (std::abs(n.x()) > 0.5f) {
+      const float wheel_y = std::min(p.y() - b.lo.y(), b.hi.y() - p.y()) - 0.85f;
+      const float dz = p.z() - 0.32f;
+      const float r2 = wheel_y * wheel_y + dz * dz;
+      if (r2 < 0.17f * 0.17f) return Eigen::Vector3f(0.35f, 0.35f, 0.36f);  // rim
+      if (r2 < 0.32f * 0.32f) return dark;                                     // tyre
+      if (r2 < 0.36f * 0.36f) return 0.15f * b.albedo + dark;                  // wheel arch
+      if (p.z() < 0.2f) return dark;
+      if (p.z() < 0.28f) return 0.5f * b.albedo;
+      return b.albedo;
+    }
+    if (std::abs(n.y()) > 0.5f) {
+      if (p.z() < 0.2f) return dark;
+      const float from_side = std::min(p.x() - b.lo.x(), b.hi.x() - p.x());
+      if (p.z() > 0.62f && p.z() < 0.74f && from_side > 0.08f && from_side < 0.38f)
+        return (b.lo.y() + b.hi.y() < 2.0f * p.y()) ? Eigen::Vector3f(0.75f, 0.08f, 0.05f)
+                                                    : Eigen::Vector3f(0.9f, 0.9f, 0.85f);
+      return p.z() < 0.3f ? 0.4f * b.albedo + dark : b.albedo;
+    }
+    return b.albedo;
+  }
+  bool paintNear(float x, float y) const {
+    const int mx = std::clamp(static_cast<int>(x * 2.0f), 0, paint_mask_w - 1);
+    const int my = std::clamp(static_cast<int>(y * 2.0f), 0, paint_mask_h - 1);
+    return paint_mask[static_cast<size_t>(my) * paint_mask_w + mx] != 0;
   }
 
   cv::Mat renderCamera(size_t ci, const geometry::Pose2& pose, uint64_t seed) const {
@@ -269,7 +360,7 @@ struct Renderer::Impl {
           p[a] = b.lo[a] + (b.hi[a] - b.lo[a]) * s / double(kSteps);
           p[a1] = (bits & 1) ? b.hi[a1] : b.lo[a1];
           p[a2] = (bits & 2) ? b.hi[a2] : b.lo[a2];
-          const auto px = cam.model.project(camera_from_map * p);
+          const auto px = projectForCulling(cam.model, camera_from_map * p);
           if (!px) {
             ++failed;
             continue;
@@ -283,13 +374,14 @@ struct Renderer::Impl {
       }
       if (!full && ok == 0) continue;
       if (failed > 0) full = true;
+      if (!full && (x1 < -0.5f || y1 < -0.5f || x0 > W || y0 > Hh)) continue;
       int tx0 = 0, ty0 = 0, tx1 = tiles_x - 1, ty1 = tiles_y - 1;
       if (!full) {
         const float margin = 4.0f + 0.08f * std::max(x1 - x0, y1 - y0);
-        tx0 = std::max(0, int((x0 - margin) / kTile));
-        ty0 = std::max(0, int((y0 - margin) / kTile));
-        tx1 = std::min(tiles_x - 1, int((x1 + margin) / kTile));
-        ty1 = std::min(tiles_y - 1, int((y1 + margin) / kTile));
+        tx0 = std::max(0, static_cast<int>(std::floor((x0 - margin) / kTile)));
+        ty0 = std::max(0, static_cast<int>(std::floor((y0 - margin) / kTile)));
+        tx1 = std::min(tiles_x - 1, static_cast<int>(std::floor((x1 + margin) / kTile)));
+        ty1 = std::min(tiles_y - 1, static_cast<int>(std::floor((y1 + margin) / kTile)));
       }
       for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx)
@@ -360,6 +452,8 @@ struct Renderer::Impl {
                 albedo = (static_cast<int>((p.x() + p.y() + p.z()) * 4.0f) & 1)
                              ? Eigen::Vector3f(0.8f, 0.65f, 0.05f)
                              : Eigen::Vector3f(0.06f, 0.06f, 0.06f);
+            } else if (b.material == Material::kCarBody) {
+              albedo = carBodyAlbedo(b, p, n);
             } else if (b.material == Material::kCarGlass && n.z() == 0.0f) {
               albedo = Eigen::Vector3f(0.05f, 0.06f, 0.07f) +
                        0.15f * Eigen::Vector3f(0.5f, 0.5f, 0.5f) * std::abs(d.z());
@@ -381,6 +475,7 @@ struct Renderer::Impl {
             const float c = g.concrete.sampleNearestLevel(p.x() * ctpm, p.y() * ctpm, fp * ctpm);
             const float shade = bilinearF(L.floor_shade, p.x() * stpm - 0.5f, p.y() * stpm - 0.5f);
             albedo = g.floor_albedo * (shade * (0.45f + 0.95f * c));
+            if (paintNear(p.x(), p.y())) {
             const float wpaint =
                 L.paint_white.sample(p.x() * ptpm - 0.5f, p.y() * ptpm - 0.5f, fp * ptpm);
             if (wpaint > 0.002f)
@@ -389,6 +484,7 @@ struct Renderer::Impl {
                 L.paint_yellow.sample(p.x() * ptpm - 0.5f, p.y() * ptpm - 0.5f, fp * ptpm);
             if (ypaint > 0.002f)
               albedo += ypaint * 0.95f * (Eigen::Vector3f(0.88f, 0.7f, 0.1f) - albedo);
+            }
             for (const int di : cell(decal_grid, p.x(), p.y())) {
               const Decal& dc = L.floor_decals[di];
               const float a = decalCoverage(dc, p, fp) * dc.opacity;
@@ -404,9 +500,7 @@ struct Renderer::Impl {
               if (std::abs(p.x() - l.center.x()) <= l.half_size.x() &&
                   std::abs(p.y() - l.center.y()) <= l.half_size.y()) {
                 albedo = Eigen::Vector3f(1.0f, 1.0f, 0.97f);
-                bool on = false;
-                for (const Lamp& lo : lamps_on) on = on || (lo.center == l.center);
-                e = on ? 2.5f : 0.25f;
+                e = lamp_is_on[li] ? 2.5f : 0.25f;
               }
             }
           } else {
@@ -420,11 +514,12 @@ struct Renderer::Impl {
           }
           const float scale = e * exposure * cr.vignette[i] * lut_scale;
           const float sigma = light.noise_sigma;
+          float n3[3];
+          noise.gauss3(n3);
           for (int ch = 0; ch < 3; ++ch) {
             // BGR output.
             const int idx = std::min(kLutSize - 1, static_cast<int>(albedo[2 - ch] * scale));
-            out[3 * x + ch] =
-                cv::saturate_cast<uint8_t>(gamma_lut[std::max(0, idx)] + sigma * noise.gauss());
+            out[3 * x + ch] = cv::saturate_cast<uint8_t>(gamma_lut[std::max(0, idx)] + sigma * n3[ch]);
           }
         }
       }

@@ -27,7 +27,7 @@ cv::Mat classifierFeatures(const cv::Mat& image, const Quad& quad, const std::st
                            const ClassifierFeatureOptions& options);
 
 struct ClassifierTrainOptions {
-  int hidden_units = 24;
+  int hidden_units = 8;
   int max_iterations = 400;
   unsigned seed = 7;
 };

@@ -88,8 +88,7 @@ Quad refinedCorners(const cv::Mat& image, const Quad& quad, const PpOcrOptions& 
 std::vector<std::optional<TextInstance>> readJobs(
     const cv::Mat& image, const std::vector<ReadJob>& jobs, const geometry::RigCamera* camera,
     const PpOcrOptions& options, const DbDetector&, const CtcRecognizer& recognizer,
-    const DirectionClassifier* direction, const Charset& charset,
-    const TextClassifier& classifier) {
+    const DirectionClassifier* direction, const Charset& charset) {
   std::vector<cv::Mat> upright(jobs.size());
   for (size_t i = 0; i < jobs.size(); ++i)
     upright[i] = rectifiedCrop(image, jobs[i].quad, CtcRecognizer::kHeight, 16,
@@ -162,9 +161,6 @@ std::vector<std::optional<TextInstance>> readJobs(
     inst.text = d.matched ? (*jobs[i].lexicon)[d.best_index] : d.raw_text;
     inst.recognition_score = d.matched ? static_cast<float>(d.posterior) : d.raw_confidence;
     inst.detection_score = jobs[i].detection_score;
-    const auto [cls, cls_score] = classifier.classify(image, inst.polygon, inst.text);
-    inst.cls = cls;
-    inst.class_score = cls_score;
     out[i] = std::move(inst);
   }
   return out;
@@ -172,13 +168,25 @@ std::vector<std::optional<TextInstance>> readJobs(
 
 }  // namespace
 
-std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
-                                                      const SpotRequest& request) {
+const GroundView& PpOcrSpotter::groundView(const geometry::RigCamera& camera) {
+  for (const auto& [name, view] : ground_views_)
+    if (name == camera.name) return *view;
+  ground_views_.emplace_back(camera.name,
+                             std::make_unique<GroundView>(camera, options_.ground_view));
+  return *ground_views_.back().second;
+}
+
+std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
+                                                      const SpotRequest& request,
+                                                      const geometry::RigCamera* camera) {
   const double scale =
       std::min(1.0, options_.detection_max_side / double(std::max(image.cols, image.rows)));
   const int w = roundTo32(image.cols * scale), h = roundTo32(image.rows * scale);
   cv::Mat resized;
-  cv::resize(image, resized, {w, h}, 0, 0, cv::INTER_AREA);
+  if (w == image.cols && h == image.rows)
+    resized = image;
+  else
+    cv::resize(image, resized, {w, h}, 0, 0, cv::INTER_AREA);
   const cv::Mat probability = nets_->detector.probability({resized})[0];
   const float sx = float(image.cols) / probability.cols, sy = float(image.rows) / probability.rows;
 
@@ -191,12 +199,61 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
     job.lexicon = &request.lexicon;
     jobs.push_back(job);
   }
-  auto read =
-      readJobs(image, jobs, request.camera, options_, nets_->detector, nets_->recognizer,
-               nets_->direction ? &*nets_->direction : nullptr, nets_->charset, nets_->classifier);
+  auto read = readJobs(image, jobs, camera, options_, nets_->detector, nets_->recognizer,
+                       nets_->direction ? &*nets_->direction : nullptr, nets_->charset);
   std::vector<TextInstance> out;
   for (auto& r : read)
     if (r) out.push_back(std::move(*r));
+  return out;
+}
+
+namespace {
+
+bool contains(const Quad& quad, const cv::Point2f& p) {
+  return cv::pointPolygonTest(std::vector<cv::Point2f>(quad.begin(), quad.end()), p, false) >= 0;
+}
+
+}  // namespace
+
+std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
+                                                      const SpotRequest& request) {
+  const bool ground = options_.view != FisheyeView::kRaw && request.camera != nullptr &&
+                      request.camera->model.width == image.cols &&
+                      request.camera->model.height == image.rows;
+  std::vector<TextInstance> out;
+  if (ground) {
+    // Floor text, found and read in the bird's-eye view, its corners mapped back to raw.
+    const GroundView& view = groundView(*request.camera);
+    for (TextInstance& inst : detectAndRead(view.render(image), request, nullptr)) {
+      bool inside = true;
+      for (auto& p : inst.polygon) {
+        const auto raw = view.rawFromView(p);
+        if (!raw)
+          inside = false;
+        else
+          p = *raw;
+      }
+      if (!inside) continue;
+      // Final corner fit at the raw image's resolution, on the ground plane.
+      inst.polygon = refinedCorners(image, inst.polygon, options_, request.camera);
+      out.push_back(std::move(inst));
+    }
+  }
+  if (!ground || options_.view == FisheyeView::kGroundAndRaw) {
+    const size_t from_ground = out.size();
+    for (TextInstance& inst : detectAndRead(image, request, request.camera)) {
+      const cv::Point2f c =
+          (inst.polygon[0] + inst.polygon[1] + inst.polygon[2] + inst.polygon[3]) * 0.25f;
+      bool seen = false;
+      for (size_t i = 0; i < from_ground && !seen; ++i) seen = contains(out[i].polygon, c);
+      if (!seen) out.push_back(std::move(inst));
+    }
+  }
+  for (TextInstance& inst : out) {
+    const auto [cls, score] = nets_->classifier.classify(image, inst.polygon, inst.text);
+    inst.cls = cls;
+    inst.class_score = score;
+  }
   return out;
 }
 
@@ -253,14 +310,17 @@ std::vector<TextInstance> PpOcrSpotter::spotRegions(const cv::Mat& image,
     }
     jobs.push_back(job);
   }
-  auto read =
-      readJobs(image, jobs, request.camera, options_, nets_->detector, nets_->recognizer,
-               nets_->direction ? &*nets_->direction : nullptr, nets_->charset, nets_->classifier);
+  auto read = readJobs(image, jobs, request.camera, options_, nets_->detector, nets_->recognizer,
+                       nets_->direction ? &*nets_->direction : nullptr, nets_->charset);
   std::vector<TextInstance> out;
   for (size_t r = 0; r < read.size(); ++r) {
     // A region where no text was detected counts only when the lexicon vouches for it.
     if (!read[r] || (jobs[r].detection_score == 0.f && !read[r]->lexicon_match)) continue;
-    out.push_back(std::move(*read[r]));
+    TextInstance& inst = *read[r];
+    const auto [cls, score] = nets_->classifier.classify(image, inst.polygon, inst.text);
+    inst.cls = cls;
+    inst.class_score = score;
+    out.push_back(std::move(inst));
   }
   return out;
 }

@@ -8,6 +8,7 @@
 
 #include "ocr/corner_refinement.h"
 #include "ocr/db_postprocess.h"
+#include "ocr/ground_view.h"
 #include "ocr/lexicon.h"
 #include "ocr/onnx_model.h"
 #include "ocr/text_classifier.h"
@@ -31,10 +32,19 @@ enum class DirectionMode {
   kClassifier,  // the direction classifier decides; both only when it is unsure
 };
 
+// Where full-frame detection runs on a fisheye image (docs/OCR.md has the measurements).
+enum class FisheyeView {
+  kRaw,           // the raw image
+  kGround,        // a bird's-eye view of the floor (needs SpotRequest::camera; else raw)
+  kGroundAndRaw,  // both; raw detections already found on the floor are dropped
+};
+
 struct PpOcrOptions {
   PpOcrModelPaths models;
   OnnxOptions onnx;
   DbOptions db;
+  FisheyeView view = FisheyeView::kGroundAndRaw;
+  GroundViewOptions ground_view;
   // Full-frame detection input: the longer side is scaled to this (multiple of 32).
   int detection_max_side = 960;
   int recognition_max_width = 480;  // crops are 48 px tall
@@ -70,8 +80,13 @@ class PpOcrSpotter : public TextSpotter {
   std::vector<TextInstance> spotFullFrame(const cv::Mat& image, const SpotRequest& request);
   std::vector<TextInstance> spotRegions(const cv::Mat& image, const SpotRequest& request);
 
+  std::vector<TextInstance> detectAndRead(const cv::Mat& image, const SpotRequest& request,
+                                          const geometry::RigCamera* camera);
+  const GroundView& groundView(const geometry::RigCamera& camera);
+
   PpOcrOptions options_;
   std::unique_ptr<Networks> nets_;
+  std::vector<std::pair<std::string, std::unique_ptr<GroundView>>> ground_views_;
 };
 
 // Throws InputError unless `image` is a non-empty 8-bit 3-channel image.

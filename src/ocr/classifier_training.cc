@@ -1,0 +1,59 @@
+#include "ocr/classifier_training.h"
+
+#include "io/sequence.h"
+
+namespace parkloc::ocr {
+
+ClassifierSamples collectClassifierSamples(const std::vector<std::string>& sequence_dirs,
+                                           const SampleOptions& options) {
+  ClassifierSamples out;
+  std::vector<cv::Mat> rows;
+  for (size_t s = 0; s < sequence_dirs.size(); ++s) {
+    const io::Sequence sequence(sequence_dirs[s]);
+    size_t frames = sequence.timestamps().size();
+    if (options.max_frames_per_sequence > 0)
+      frames = std::min(frames, options.max_frames_per_sequence);
+    for (size_t f = 0; f < frames; f += std::max<size_t>(options.frame_stride, 1)) {
+      for (const auto& camera : sequence.cameras()) {
+        const auto labels = sequence.loadLabels(f, camera);
+        if (!labels || labels->instances.empty()) continue;
+        const cv::Mat image = sequence.loadImage(f, camera);
+        if (image.empty() || image.type() != CV_8UC3) continue;
+        for (const auto& inst : labels->instances) {
+          if (inst.occluded_fraction >= options.max_occluded_fraction || inst.truncated) continue;
+          Quad quad;
+          for (int k = 0; k < 4; ++k)
+            quad[k] = cv::Point2f(static_cast<float>(inst.polygon[k].x()),
+                                  static_cast<float>(inst.polygon[k].y()));
+          if (quadHeight(quad) < 4.f || quadWidth(quad) < 4.f) continue;
+          rows.push_back(classifierFeatures(image, quad, inst.text, options.features));
+          out.labels.push_back(inst.cls);
+        }
+      }
+    }
+    if (options.progress) options.progress(s + 1, sequence_dirs.size());
+  }
+  if (!rows.empty()) cv::vconcat(rows, out.features);
+  return out;
+}
+
+double ClassifierScore::classAccuracy(map::TextClass c) const {
+  const int t = static_cast<int>(c);
+  const size_t total = confusion[t][0] + confusion[t][1] + confusion[t][2];
+  return total ? double(confusion[t][t]) / total : 0.0;
+}
+
+ClassifierScore scoreClassifier(const TextClassifier& classifier,
+                                const ClassifierSamples& samples) {
+  ClassifierScore score;
+  for (int i = 0; i < samples.features.rows; ++i) {
+    const auto predicted = classifier.predict(samples.features.row(i)).first;
+    const int t = static_cast<int>(samples.labels[i]), p = static_cast<int>(predicted);
+    ++score.confusion[t][p];
+    ++score.samples;
+    if (t == p) ++score.correct;
+  }
+  return score;
+}
+
+}  // namespace parkloc::ocr

@@ -1,0 +1,42 @@
+#pragma once
+// Training data for the classification head from dataset sequences (`parkloc simulate`
+// folders): one sample per labelled text instance, its features taken from the labelled
+// polygon and transcription, as the spotter will see a correctly read instance.
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ocr/text_classifier.h"
+
+namespace parkloc::ocr {
+
+struct ClassifierSamples {
+  cv::Mat features;  // CV_32F, one row per instance
+  std::vector<map::TextClass> labels;
+};
+
+struct SampleOptions {
+  ClassifierFeatureOptions features;
+  double max_occluded_fraction = 0.5;  // the targets' "less than half occluded"
+  size_t frame_stride = 1;             // use every n-th frame set
+  size_t max_frames_per_sequence = 0;  // 0: all
+  std::function<void(size_t done, size_t total)> progress;  // per sequence
+};
+
+// Reads the sequences' images and labels; throws InputError for unreadable sequences.
+ClassifierSamples collectClassifierSamples(const std::vector<std::string>& sequence_dirs,
+                                           const SampleOptions& options);
+
+struct ClassifierScore {
+  size_t samples = 0;
+  size_t correct = 0;
+  // confusion[truth][predicted], classes in TextClass order.
+  size_t confusion[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  double accuracy() const { return samples ? double(correct) / samples : 0.0; }
+  double classAccuracy(map::TextClass c) const;
+};
+
+ClassifierScore scoreClassifier(const TextClassifier& classifier, const ClassifierSamples& samples);
+
+}  // namespace parkloc::ocr

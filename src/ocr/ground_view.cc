@@ -1,0 +1,54 @@
+#include "ocr/ground_view.h"
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+namespace parkloc::ocr {
+
+GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOptions& options)
+    : camera_(camera), options_(options) {
+  const Eigen::Vector3d axis = camera.vehicle_from_camera.linear().col(2);
+  Eigen::Vector2d forward = axis.head<2>();
+  if (forward.norm() < 1e-6) forward = Eigen::Vector2d::UnitX();  // looking straight down
+  forward.normalize();
+  // Seen from above with the camera's heading up the view: right is heading turned -90 deg.
+  right_ = Eigen::Vector2d(forward.y(), -forward.x());
+  toward_ = -forward;
+  const Eigen::Vector2d foot = camera.vehicle_from_camera.translation().head<2>();
+  origin_ = foot + forward * options.far - right_ * options.half_width;
+
+  auto roundUp32 = [](double v) {
+    return std::max(32, static_cast<int>(std::ceil(v / 32.0)) * 32);
+  };
+  const int cols = roundUp32(2 * options.half_width / options.resolution);
+  const int rows = roundUp32((options.far - options.near) / options.resolution);
+  map_x_.create(rows, cols, CV_32F);
+  map_y_.create(rows, cols, CV_32F);
+  const geometry::Rigid3 camera_from_vehicle = camera.vehicle_from_camera.inverse();
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
+      const Eigen::Vector2d g =
+          origin_ + right_ * (c * options.resolution) + toward_ * (r * options.resolution);
+      const auto px =
+          camera.model.project(camera_from_vehicle * Eigen::Vector3d(g.x(), g.y(), 0.0));
+      map_x_.at<float>(r, c) = px ? static_cast<float>(px->x()) : -1e4f;
+      map_y_.at<float>(r, c) = px ? static_cast<float>(px->y()) : -1e4f;
+    }
+}
+
+cv::Mat GroundView::render(const cv::Mat& raw) const {
+  cv::Mat view;
+  cv::remap(raw, view, map_x_, map_y_, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar::all(0));
+  return view;
+}
+
+std::optional<cv::Point2f> GroundView::rawFromView(const cv::Point2f& v) const {
+  const Eigen::Vector2d g =
+      origin_ + right_ * (v.x * options_.resolution) + toward_ * (v.y * options_.resolution);
+  const auto px = camera_.model.project(camera_.vehicle_from_camera.inverse() *
+                                        Eigen::Vector3d(g.x(), g.y(), 0.0));
+  if (!px) return std::nullopt;
+  return cv::Point2f(static_cast<float>(px->x()), static_cast<float>(px->y()));
+}
+
+}  // namespace parkloc::ocr

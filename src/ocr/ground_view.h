@@ -1,0 +1,39 @@
+#pragma once
+// A bird's-eye view of the floor for one fisheye camera: painted text appears as painted
+// (no lens distortion, no perspective, constant scale), which the detector and recognizer
+// (trained on ordinary scene text) read far better than the raw image at grazing angles.
+// View pixels map to ground points in the vehicle frame and back to raw image pixels, so
+// everything found in the view is reported in raw pixels.
+#include <opencv2/core.hpp>
+#include <optional>
+
+#include "geometry/rig.h"
+
+namespace parkloc::ocr {
+
+struct GroundViewOptions {
+  double resolution = 0.015;  // metres per view pixel
+  double near = 0.0;          // view extent ahead of the camera (along its ground heading)
+  double far = 6.0;
+  double half_width = 6.0;  // to each side
+};
+
+class GroundView {
+ public:
+  // Precomputes the remap tables; view sizes are multiples of 32 (the detector's stride).
+  GroundView(const geometry::RigCamera& camera, const GroundViewOptions& options = {});
+
+  cv::Size size() const { return map_x_.size(); }
+  // The view of a raw image (black where the camera does not see the floor).
+  cv::Mat render(const cv::Mat& raw) const;
+  // View pixel -> raw image pixel through the ground plane; empty outside the lens' field.
+  std::optional<cv::Point2f> rawFromView(const cv::Point2f& view_pixel) const;
+
+ private:
+  geometry::RigCamera camera_;
+  GroundViewOptions options_;
+  Eigen::Vector2d origin_, right_, toward_;  // ground point of view pixel (0, 0) and axes
+  cv::Mat map_x_, map_y_;
+};
+
+}  // namespace parkloc::ocr

@@ -1,0 +1,102 @@
+#include "ocr/text_classifier.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+#include "common/error.h"
+#include "synthetic_text.h"
+
+namespace parkloc::ocr {
+namespace {
+
+// Three visually distinct kinds: white floor digits, dark letters on a bright pillar, and
+// yellow words; each instance with a little jitter.
+struct Sample {
+  cv::Mat image;
+  Quad quad;
+  std::string text;
+  map::TextClass cls;
+};
+
+Sample makeSample(int kind, std::mt19937& rng) {
+  std::uniform_int_distribution<int> digit(0, 9);
+  std::uniform_int_distribution<int> shade(-15, 15);
+  const int margin = 30;
+  std::string text;
+  cv::Scalar ink, paper;
+  if (kind == 0) {
+    text = std::string("B") + char('1' + digit(rng) % 3);
+    ink = {40.0 + shade(rng), 40, 40};
+    paper = {200.0 + shade(rng), 200, 200};
+  } else if (kind == 1) {
+    text = std::to_string(100 + digit(rng) * 10 + digit(rng));
+    ink = {230, 230, 230.0 + shade(rng)};
+    paper = {100.0 + shade(rng), 100, 100};
+  } else {
+    text = digit(rng) % 2 ? "EXIT" : "SLOW";
+    ink = {30, 200.0 + shade(rng), 220};
+    paper = {90.0 + shade(rng), 95, 95};
+  }
+  Sample s;
+  s.image = testing::renderTextLine(text, 24, margin, ink, paper);
+  const float W = s.image.cols, H = s.image.rows;
+  s.quad = {cv::Point2f(margin, margin),
+            {W - margin, margin},
+            {W - margin, H - margin},
+            {margin, H - margin}};
+  s.text = text;
+  s.cls = static_cast<map::TextClass>(kind);
+  return s;
+}
+
+TEST(TextClassifier, LearnsSeparableClassesAndSurvivesASaveLoadRoundTrip) {
+  std::mt19937 rng(11);
+  ClassifierFeatureOptions features;
+  std::vector<cv::Mat> rows;
+  std::vector<map::TextClass> labels;
+  for (int i = 0; i < 60; ++i) {
+    const Sample s = makeSample(i % 3, rng);
+    rows.push_back(classifierFeatures(s.image, s.quad, s.text, features));
+    labels.push_back(s.cls);
+  }
+  cv::Mat x;
+  cv::vconcat(rows, x);
+  const TextClassifier classifier = TextClassifier::train(x, labels, features);
+
+  const auto path =
+      (std::filesystem::temp_directory_path() / "parkloc_classifier_test.yml").string();
+  classifier.save(path);
+  const TextClassifier loaded = TextClassifier::load(path);
+  std::filesystem::remove(path);
+  EXPECT_FLOAT_EQ(loaded.featureOptions().expand_ratio, 2.f);
+
+  int correct = 0;
+  for (int i = 0; i < 30; ++i) {
+    const Sample s = makeSample(i % 3, rng);
+    const auto [cls, score] = loaded.classify(s.image, s.quad, s.text);
+    correct += cls == s.cls;
+    EXPECT_EQ(cls, classifier.classify(s.image, s.quad, s.text).first);
+    EXPECT_GT(score, 0.f);
+    EXPECT_LE(score, 1.f);
+  }
+  EXPECT_GE(correct, 28);
+}
+
+TEST(TextClassifier, MissingOrForeignFileIsAnInputError) {
+  EXPECT_THROW(TextClassifier::load("/nonexistent/classifier.yml"), InputError);
+  const auto path =
+      (std::filesystem::temp_directory_path() / "parkloc_not_a_classifier.yml").string();
+  {
+    cv::FileStorage fs(path, cv::FileStorage::WRITE);
+    fs << "kind"
+       << "something_else";
+  }
+  EXPECT_THROW(TextClassifier::load(path), InputError);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace parkloc::ocr

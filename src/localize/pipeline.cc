@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <set>
 
 #include "common/error.h"
 #include "geometry/ground_projection.h"
@@ -103,6 +105,8 @@ std::string toString(AssociationVerdict verdict) {
       return "solver_outlier";
     case AssociationVerdict::kNoGeometry:
       return "no_geometry";
+    case AssociationVerdict::kAmbiguous:
+      return "ambiguous";
   }
   return "unknown";
 }
@@ -133,6 +137,13 @@ struct Pipeline::Impl {
   bool disagreeing_with_consensus = false;  // one of them had two or more landmarks
   geometry::Pose2 last_disagreeing_fix;
   geometry::Pose2 predicted_at_last_disagreeing_fix;
+  // The level being driven on when PipelineOptions::level is empty: voted by the texts
+  // seen while not tracking (garages repeat parking numbers on every level), kept while
+  // tracking.
+  std::string active_level;
+  // Without odometry: the filtered pose at the last fix and the motion since the one before.
+  std::optional<std::pair<double, geometry::Pose2>> last_fix;
+  std::optional<io::OdometrySample> visual_motion;
   // Paper mode.
   bool paper_has_pose = false;
   geometry::Pose2 paper_pose;
@@ -177,6 +188,9 @@ struct Pipeline::Impl {
     disagreeing_with_consensus = false;
     paper_has_pose = false;
     paper_yaw = 0.0;
+    active_level.clear();
+    last_fix.reset();
+    visual_motion.reset();
     if (options.initial_pose) {
       paper_pose = *options.initial_pose;
       paper_yaw = options.initial_pose->yaw;
@@ -208,10 +222,32 @@ struct Pipeline::Impl {
         warnings.push_back(fmt::format("odometry gap: the last sample is {:.3f} s old", age));
       ekf.predictWithOdometry(hold.speed, hold.yaw_rate, dt);
       if (dt > covered) ekf.predictWithoutOdometry(dt - covered);
+    } else if (visual_motion) {
+      // No odometry: a constant-velocity guess from the last two fixes, with the random
+      // walk on top for its uncertainty.
+      ekf.predictWithOdometry(visual_motion->speed, visual_motion->yaw_rate, dt);
+      ekf.predictWithoutOdometry(dt);
     } else {
       ekf.predictWithoutOdometry(dt);
     }
     ekf.setTime(t);
+  }
+
+  // After a filter update without odometry: the motion between this and the last fix.
+  void updateVisualMotion(double t) {
+    if (options.use_odometry && have_odometry) return;
+    if (last_fix && t > last_fix->first && t - last_fix->first < 0.5) {
+      const double dt = t - last_fix->first;
+      const geometry::Pose2 delta = last_fix->second.inverse() * ekf.pose();
+      io::OdometrySample m;
+      m.timestamp = t;
+      m.speed = delta.x / dt;
+      m.yaw_rate = delta.yaw / dt;
+      visual_motion = m;
+    } else {
+      visual_motion.reset();
+    }
+    last_fix = std::make_pair(t, ekf.pose());
   }
 
   void consumeOdometry(const FrameInput& frame, bool time_ok, std::vector<std::string>& warnings) {
@@ -247,6 +283,7 @@ struct Pipeline::Impl {
   }
 
   FrameResult process(const FrameInput& frame);
+  void voteLevel(const std::vector<CameraResult>& cameras);
   void measureParkloc(const std::vector<LandmarkObservation>& inside,
                       const std::vector<LandmarkObservation>& outside, FrameResult& result);
   void measurePaper(const std::vector<LandmarkObservation>& accepted, FrameResult& result);
@@ -254,6 +291,31 @@ struct Pipeline::Impl {
   void markSolve(const std::vector<LandmarkObservation>& obs, const SolverResult& solve,
                  FrameResult& result) const;
 };
+
+void Pipeline::Impl::voteLevel(const std::vector<CameraResult>& cameras) {
+  std::map<std::string, int> votes;
+  for (const auto& c : cameras) {
+    for (const auto& t : c.instances) {
+      if (t.cls != map::TextClass::kParkingNumber && t.cls != map::TextClass::kPillar) continue;
+      std::set<std::string> levels;
+      for (const auto* l : map.findByText(t.text)) levels.insert(l->level);
+      for (const auto& level : levels) ++votes[level];
+    }
+  }
+  int best = 0;
+  bool tie = false;
+  std::string winner;
+  for (const auto& [level, n] : votes) {
+    if (n > best) {
+      best = n;
+      winner = level;
+      tie = false;
+    } else if (n == best) {
+      tie = true;
+    }
+  }
+  if (best > 0 && !tie) active_level = winner;
+}
 
 std::vector<LandmarkObservation> Pipeline::Impl::selectForModules(
     std::vector<LandmarkObservation> obs) const {
@@ -369,7 +431,9 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
       // First fix, or re-localisation after the filter got lost.
       ekf.initialise(fix->pose, R, result.timestamp);
       result.reinitialised = true;
+      last_fix.reset();
     }
+    updateVisualMotion(result.timestamp);
     disagreeing_fixes = 0;
     disagreeing_with_consensus = false;
     result.status = TrackingStatus::kOk;
@@ -502,7 +566,8 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
   frames_since_full_frame = full_frame ? 0 : frames_since_full_frame + 1;
   std::vector<const map::Landmark*> nearby;
   if (!full_frame)
-    nearby = map.withinRadius(ekf.pose().translation(), options.roi_radius_m, options.level);
+    nearby = map.withinRadius(ekf.pose().translation(), options.roi_radius_m,
+                              options.level.empty() ? active_level : options.level);
   result.timings.roi_ms += msSince(t_roi);
 
   // 3. Spotting, camera by camera in rig order.
@@ -561,6 +626,11 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
 
   // 4. Association: class, score, AFM (paper 3.3), exact matching (3.3), gating.
   const auto t_assoc = Clock::now();
+  if (options.level.empty() && (!is_tracking || active_level.empty()) && !options.paper_mode)
+    voteLevel(result.cameras);
+  if (options.paper_mode && options.level.empty() && active_level.empty())
+    voteLevel(result.cameras);
+  const std::string& level = options.level.empty() ? active_level : options.level;
   std::vector<LandmarkObservation> inside, outside;
   for (size_t c = 0; c < result.cameras.size(); ++c) {
     const auto& instances = result.cameras[c].instances;
@@ -584,41 +654,62 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
                  !afm.accept(*number)) {
         a.verdict = AssociationVerdict::kAnomaly;
       } else {
-        const auto candidates = map.findByText(instance.text, options.level);
-        const map::Landmark* landmark = nullptr;
-        for (const auto* l : candidates) {
-          // Several levels share a text: the one nearest the prediction (or the first).
-          if (!landmark ||
-              (is_tracking && (l->position.head<2>() - ekf.pose().translation()).norm() <
-                                  (landmark->position.head<2>() - ekf.pose().translation()).norm()))
-            landmark = l;
-        }
-        if (!landmark) {
-          a.verdict = AssociationVerdict::kNotInMap;
-        } else {
-          a.landmark_id = landmark->id;
+        const auto candidates = map.findByText(instance.text, level);
+        const auto observe = [&](const map::Landmark& landmark) {
           LandmarkObservation o;
           o.camera = static_cast<int>(c);
-          o.landmark_id = landmark->id;
+          o.landmark_id = landmark.id;
           o.pixels = toEigen(instance.polygon);
-          o.map_corners = floors.cornersAboveFloor(*landmark);
+          o.map_corners = floors.cornersAboveFloor(landmark);
           o.tag = tag;
-          a.verdict = AssociationVerdict::kAccepted;
-          if (is_tracking) {
-            const auto gate =
-                gateObservation(rig.cameras[c], o, ekf.pose(), ekf.covariance(), gate_options);
-            if (!gate) {
-              a.verdict = AssociationVerdict::kGated;
-            } else {
-              a.mahalanobis2 = gate->mahalanobis2;
-              if (!gate->reading_order_agrees)
-                a.verdict = AssociationVerdict::kFlipped;
-              else if (gate->mahalanobis2 > options.gate_chi2)
-                a.verdict = AssociationVerdict::kGated;
+          return o;
+        };
+        LandmarkObservation o;
+        if (candidates.empty()) {
+          a.verdict = AssociationVerdict::kNotInMap;
+        } else if (is_tracking) {
+          // Gate every landmark with this text (pillar faces, other levels): the one that
+          // fits the prediction best, reading the right way round, is the association.
+          AssociationVerdict best_verdict = AssociationVerdict::kGated;
+          double best_m2 = std::numeric_limits<double>::infinity();
+          for (const map::Landmark* l : candidates) {
+            const LandmarkObservation candidate = observe(*l);
+            const auto gate = gateObservation(rig.cameras[c], candidate, ekf.pose(),
+                                              ekf.covariance(), gate_options);
+            if (!gate) continue;
+            const AssociationVerdict verdict =
+                !gate->reading_order_agrees              ? AssociationVerdict::kFlipped
+                : gate->mahalanobis2 > options.gate_chi2 ? AssociationVerdict::kGated
+                                                         : AssociationVerdict::kAccepted;
+            // Accepted beats flipped beats gated; then the smaller distance.
+            const auto rank = [](AssociationVerdict v) {
+              return v == AssociationVerdict::kAccepted  ? 0
+                     : v == AssociationVerdict::kFlipped ? 1
+                                                         : 2;
+            };
+            if (rank(verdict) < rank(best_verdict) ||
+                (rank(verdict) == rank(best_verdict) && gate->mahalanobis2 < best_m2)) {
+              best_verdict = verdict;
+              best_m2 = gate->mahalanobis2;
+              o = candidate;
             }
           }
+          if (o.camera < 0) o = observe(*candidates.front());  // projects nowhere: gated
+          a.verdict = best_verdict;
+          a.landmark_id = o.landmark_id;
+          if (std::isfinite(best_m2)) a.mahalanobis2 = best_m2;
+        } else if (candidates.size() > 1 && !options.paper_mode) {
+          a.verdict = AssociationVerdict::kAmbiguous;
+        } else {
+          o = observe(*candidates.front());
+          a.landmark_id = o.landmark_id;
+          a.verdict = AssociationVerdict::kAccepted;
+        }
+        if (o.camera >= 0) {
           if (a.verdict == AssociationVerdict::kAccepted) inside.push_back(o);
-          if (a.verdict == AssociationVerdict::kGated) outside.push_back(o);
+          // Re-localisation uses unique texts only: a gated pillar face could be any face.
+          if (a.verdict == AssociationVerdict::kGated && candidates.size() == 1)
+            outside.push_back(o);
         }
       }
       result.associations.push_back(std::move(a));

@@ -165,6 +165,8 @@ enum class AssociationVerdict {
   kFlipped,        // reading order disagrees with the map heading (180-degree reading)
   kSolverOutlier,  // down-weighted to (near) zero by the robust solver
   kNoGeometry,     // polygon cannot be cast onto the ground / face (horizon, behind)
+  kAmbiguous,      // the text names several landmarks (pillar faces, levels) and no pose
+                   // tells which one (added later; additive)
 };
 std::string toString(AssociationVerdict verdict);
 

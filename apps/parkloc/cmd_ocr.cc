@@ -6,6 +6,8 @@
 
 #include "apps/parkloc/command.h"
 #include "common/error.h"
+#include "geometry/rig.h"
+#include "io/calibration_yaml.h"
 #include "io/map_geojson.h"
 #include "ocr/ocr_io.h"
 #include "ocr/ppocr/pp_ocr_spotter.h"
@@ -23,6 +25,9 @@ struct OcrArgs {
   int det_side = 960;
   std::string direction = "classifier";
   bool no_refine = false;
+  std::string view = "ground";
+  std::string camera;
+  std::string calib;
 };
 
 void run(const OcrArgs& args) {
@@ -34,9 +39,21 @@ void run(const OcrArgs& args) {
   options.direction =
       args.direction == "both" ? ocr::DirectionMode::kDecodeBoth : ocr::DirectionMode::kClassifier;
   options.refine_corners = !args.no_refine;
+  options.view = args.view == "raw"      ? ocr::FisheyeView::kRaw
+                 : args.view == "ground" ? ocr::FisheyeView::kGround
+                                         : ocr::FisheyeView::kGroundAndRaw;
+  const geometry::Rig rig =
+      args.calib.empty() ? geometry::defaultRig() : io::loadCalibration(args.calib);
+  const geometry::RigCamera* camera = nullptr;
+  if (!args.camera.empty()) {
+    camera = rig.find(args.camera);
+    if (camera == nullptr)
+      throw InputError("--camera: no camera named '" + args.camera + "' in the rig");
+  }
   ocr::SpotRequest request;
   if (!args.lexicon.empty()) request.lexicon = ocr::loadLexiconFile(args.lexicon);
   if (!args.map.empty()) request.lexicon = ocr::lexiconFromMap(io::loadMap(args.map));
+  request.camera = camera;
   ocr::PpOcrSpotter spotter(options);
 
   nlohmann::json all = nlohmann::json::array();
@@ -78,6 +95,13 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
       ->capture_default_str();
   cmd->add_option("--direction", args->direction, "classifier | both")
       ->check(CLI::IsMember({"classifier", "both"}))
+      ->capture_default_str();
+  cmd->add_option("--camera", args->camera,
+                  "Rig camera that took the images (front, rear, left, right): enables the "
+                  "floor view and ground-plane corner fit");
+  cmd->add_option("--calib", args->calib, "Rig calibration YAML (default: the built-in rig)");
+  cmd->add_option("--view", args->view, "With --camera: ground | raw | both")
+      ->check(CLI::IsMember({"ground", "raw", "both"}))
       ->capture_default_str();
   cmd->add_flag("--no-refine", args->no_refine, "Keep DB's boxes (no corner re-fit to the ink)");
   cmd->callback([args] { run(*args); });

@@ -129,8 +129,6 @@ std::vector<std::optional<TextInstance>> readJobs(
       owner.emplace_back(i, true);
     }
   }
-  const auto outputs = recognizer.recognize(crops, options.recognition_batch);
-
   static const std::vector<std::string> kNoLexicon;
   struct Best {
     double score = -std::numeric_limits<double>::infinity();
@@ -138,14 +136,36 @@ std::vector<std::optional<TextInstance>> readJobs(
     bool turned = false;
   };
   std::vector<Best> best(jobs.size());
-  for (size_t k = 0; k < outputs.size(); ++k) {
-    const auto [job, turned] = owner[k];
-    const auto& lexicon = jobs[job].lexicon ? *jobs[job].lexicon : kNoLexicon;
-    LexiconDecoding d = decodeWithLexicon(outputs[k].matrix(), charset, lexicon, options.lexicon);
-    // Both directions share the crop's step count, so their log probabilities compare.
-    const double score = d.matched ? std::max(d.best_log_prob, d.raw_log_prob) : d.raw_log_prob;
-    if (score > best[job].score) best[job] = {score, std::move(d), turned};
+  auto decodeAll = [&](const std::vector<cv::Mat>& batch,
+                       const std::vector<std::pair<size_t, bool>>& from) {
+    const auto outputs = recognizer.recognize(batch, options.recognition_batch);
+    for (size_t k = 0; k < outputs.size(); ++k) {
+      const auto [job, turned] = from[k];
+      const auto& lexicon = jobs[job].lexicon ? *jobs[job].lexicon : kNoLexicon;
+      LexiconDecoding d = decodeWithLexicon(outputs[k].matrix(), charset, lexicon, options.lexicon);
+      // Both directions share the crop's step count, so their log probabilities compare;
+      // a lexicon match beats a free reading.
+      const double score = (d.matched ? 1e6 : 0.0) +
+                           (d.matched ? std::max(d.best_log_prob, d.raw_log_prob) : d.raw_log_prob);
+      if (score > best[job].score) best[job] = {score, std::move(d), turned};
+    }
+  };
+  decodeAll(crops, owner);
+
+  // The direction classifier was sure, yet no lexicon entry fits: try the other direction.
+  std::vector<cv::Mat> retry;
+  std::vector<std::pair<size_t, bool>> retry_owner;
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    if (directions[i] == 3 || !jobs[i].try_both_directions || jobs[i].lexicon == nullptr ||
+        jobs[i].lexicon->empty() || best[i].decoding.matched)
+      continue;
+    const bool turned = directions[i] == 1;
+    cv::Mat crop = upright[i];
+    if (turned) cv::rotate(upright[i], crop, cv::ROTATE_180);
+    retry.push_back(crop);
+    retry_owner.emplace_back(i, turned);
   }
+  if (!retry.empty()) decodeAll(retry, retry_owner);
 
   std::vector<std::optional<TextInstance>> out(jobs.size());
   for (size_t i = 0; i < jobs.size(); ++i) {

@@ -43,7 +43,7 @@ struct PpOcrOptions {
   PpOcrModelPaths models;
   OnnxOptions onnx;
   DbOptions db;
-  FisheyeView view = FisheyeView::kGroundAndRaw;
+  FisheyeView view = FisheyeView::kGround;
   GroundViewOptions ground_view;
   // Full-frame detection input: the longer side is scaled to this (multiple of 32).
   int detection_max_side = 960;

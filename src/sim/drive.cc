@@ -23,9 +23,10 @@ class PathBuilder {
     points_.push_back({x, y, yaw, +1, 0.0, false});
   }
   void straight(double length, int direction) { piece(length, 0.0, direction); }
-  // Arc turning the heading by `angle` (positive = counter-clockwise) at radius r.
+  // Arc turning the heading by `angle` (positive = counter-clockwise) at radius r, driving
+  // forward or in reverse.
   void arc(double r, double angle, int direction) {
-    piece(r * std::abs(angle), (angle > 0 ? 1.0 : -1.0) * direction / r, direction);
+    piece(r * std::abs(angle), (angle > 0 ? 1.0 : -1.0) / r, direction);
   }
   double length() const { return (points_.size() - 1) * kStep; }
   std::vector<PathPoint>& points() { return points_; }
@@ -33,7 +34,7 @@ class PathBuilder {
   double y() const { return y_; }
 
  private:
-  // Heading changes by curvature * direction * ds... the signed turn per metre travelled.
+  // yaw_per_metre: the signed heading change per metre travelled (either direction).
   void piece(double length, double yaw_per_metre, int direction) {
     const int n = std::max(1, static_cast<int>(std::lround(length / kStep)));
     const double ds = length / n;

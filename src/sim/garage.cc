@@ -49,8 +49,8 @@ cv::Mat makeConcrete(Rng& rng, int size) {
   acc.convertTo(out, CV_8U, 22.0, 150.0);
   // Sparse light aggregate specks.
   std::uniform_int_distribution<int> pos(0, size - 1);
-  for (int i = 0; i < size * size / 400; ++i)
-    cv::circle(out, {pos(rng), pos(rng)}, 1, cv::Scalar(190 + pos(rng) % 40), -1, cv::LINE_AA);
+  for (int i = 0; i < size * size / 800; ++i)
+    out.at<uint8_t>(pos(rng), pos(rng)) = static_cast<uint8_t>(175 + pos(rng) % 30);
   return out;
 }
 
@@ -178,6 +178,8 @@ void buildLevel(Builder& b, int level_index) {
                   cv::Point(int(box.hi.x() * 10), int(box.hi.y() * 10)), cv::Scalar(strength), -1);
   };
 
+  // Arrows and floor words placed so far (centre, radius): new ones keep clear of them.
+  std::vector<std::pair<Eigen::Vector2d, double>> floor_marks;
   int number_index = 0;
   int pillar_count = 0, plate_count = 0;
   for (int aisle = 0; aisle < spec.aisles; ++aisle) {
@@ -376,9 +378,11 @@ void buildLevel(Builder& b, int level_index) {
     }
     // Direction arrows and other text in the aisle.
     for (double ax = g.aisle_x0 + uniform(rng, 3.0, 8.0); ax < g.aisle_x1 - 3.0;
-         ax += uniform(rng, 12.0, 20.0))
-      paintArrow(g, white, {ax, yc + (chance(rng, 0.5) ? 1.4 : -1.4)},
-                 chance(rng, 0.5) ? Eigen::Vector2d(1, 0) : Eigen::Vector2d(-1, 0));
+         ax += uniform(rng, 12.0, 20.0)) {
+      const Eigen::Vector2d c(ax, yc + (chance(rng, 0.5) ? 1.4 : -1.4));
+      paintArrow(g, white, c, chance(rng, 0.5) ? Eigen::Vector2d(1, 0) : Eigen::Vector2d(-1, 0));
+      floor_marks.push_back({c, 1.3});
+    }
   }
 
   // Other text ("EXIT", "SLOW", speed limits) on the aisle and cross-aisle floors.
@@ -386,6 +390,8 @@ void buildLevel(Builder& b, int level_index) {
                                           "ONE WAY", "NO PARKING", "EXIT ->", "LIFT"};
   int other_count = 0;
   auto addOther = [&](const Eigen::Vector2d& c, double heading) {
+    for (const auto& [centre, radius] : floor_marks)
+      if ((centre - c).norm() < radius + 1.2) return;  // would overlap: leave it out
     map::Landmark lm;
     lm.id = fmt::format("{}:other:{}", lv, ++other_count);
     lm.text = pick(rng, words);
@@ -407,9 +413,10 @@ void buildLevel(Builder& b, int level_index) {
     L.floor_decals.push_back(d);
     L.texts.push_back({lm, true});
     b.map_landmarks.push_back(lm);
+    floor_marks.push_back({c, 0.5 * lm.width});
   };
   for (int aisle = 0; aisle < spec.aisles; ++aisle) {
-    const int n = std::uniform_int_distribution<int>(1, 3)(rng);
+    const int n = std::uniform_int_distribution<int>(2, 5)(rng);
     for (int i = 0; i < n; ++i) {
       const double x = uniform(rng, g.aisle_x0 + 3.0, g.aisle_x1 - 3.0);
       // Read by a driver going east (up = +x, reading = -y) or west.
@@ -439,7 +446,7 @@ void buildLevel(Builder& b, int level_index) {
   const int sw_px = static_cast<int>(std::ceil(g.size.x() * sp)),
             sh_px = static_cast<int>(std::ceil(g.size.y() * sp));
   cv::Mat shade(sh_px, sw_px, CV_32F);
-  cv::randn(shade, 0.0, 1.0);
+  cv::RNG(rng()).fill(shade, cv::RNG::NORMAL, 0.0, 1.0);  // seeded, not cv::theRNG()
   cv::GaussianBlur(shade, shade, cv::Size(0, 0), 0.8 * sp);
   cv::normalize(shade, shade, -1.0, 1.0, cv::NORM_MINMAX);
   shade = 1.0 + 0.08 * shade;

@@ -10,10 +10,15 @@ MipTexture::MipTexture(const cv::Mat& level0_u8, bool wrap) : wrap_(wrap) {
   CV_Assert(level0_u8.type() == CV_8UC1 && !level0_u8.empty());
   levels_.push_back(level0_u8.clone());
   while (levels_.back().cols > 1 && levels_.back().rows > 1) {
+    // Each texel of the next level averages a 2x2 block, so texel j of level l is centred
+    // on level-0 coordinate 2^l (j + 0.5) - 0.5 as bilinear() assumes (pyrDown would shift
+    // it by half a texel per level). Odd sizes are padded (wrapped or replicated) first.
+    const cv::Mat& prev = levels_.back();
+    cv::Mat even;
+    cv::copyMakeBorder(prev, even, 0, prev.rows % 2, 0, prev.cols % 2,
+                       wrap ? cv::BORDER_WRAP : cv::BORDER_REPLICATE);
     cv::Mat next;
-    // Gaussian pre-filter then decimation (pyrDown); wrap-around for tiling textures.
-    cv::pyrDown(levels_.back(), next, cv::Size(),
-                wrap ? cv::BORDER_REFLECT101 : cv::BORDER_REPLICATE);
+    cv::resize(even, next, cv::Size(even.cols / 2, even.rows / 2), 0, 0, cv::INTER_AREA);
     levels_.push_back(next);
   }
 }

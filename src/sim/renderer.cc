@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <random>
 
 namespace parkloc::sim {
@@ -53,17 +53,20 @@ struct XorShift {
 // Fisheye projection without the field-of-view limit, for culling: points past the model's
 // last angle land beyond the image border instead of failing, so a box that is partly behind
 // the camera still gets a tight bound. Empty only near the axis pointing backwards.
-std::optional<Eigen::Vector2d> projectForCulling(const geometry::CameraModel& m, const Eigen::Vector3d& p) {
+std::optional<Eigen::Vector2d> projectForCulling(const geometry::CameraModel& m,
+                                                 const Eigen::Vector3d& p) {
   if (m.type != geometry::CameraModelType::kFisheye) return m.project(p);
   const double r = p.head<2>().norm();
-  if (r < 1e-12) return p.z() > 0 ? std::optional<Eigen::Vector2d>(Eigen::Vector2d(m.cx, m.cy)) : std::nullopt;
+  if (r < 1e-12)
+    return p.z() > 0 ? std::optional<Eigen::Vector2d>(Eigen::Vector2d(m.cx, m.cy)) : std::nullopt;
   const double theta = std::atan2(r, p.z());
   if (theta > 2.9) return std::nullopt;
   const double t = std::min(theta, m.max_theta);
   const double t2 = t * t;
   const auto& k = m.distortion;
   // Past max_theta continue linearly with the slope there (the model is monotonic up to it).
-  const double td = t * (1 + t2 * (k[0] + t2 * (k[1] + t2 * (k[2] + t2 * k[3])))) + (theta - t) * 1.2;
+  const double td =
+      t * (1 + t2 * (k[0] + t2 * (k[1] + t2 * (k[2] + t2 * k[3])))) + (theta - t) * 1.2;
   return Eigen::Vector2d(m.fx * p.x() / r * td + m.cx, m.fy * p.y() / r * td + m.cy);
 }
 
@@ -116,10 +119,10 @@ LightingOptions lightingForCondition(const std::string& condition, uint64_t seed
   LightingOptions l;
   l.lamp_seed = seed ^ 0x5bd1e995ULL;
   if (condition == "weak") {
-    l.ambient = u(0.03f, 0.07f);
+    l.ambient = u(0.02f, 0.05f);
     l.lamp_power = u(2.0f, 3.5f);
-    l.lamps_on_share = u(0.5f, 0.75f);
-    l.exposure = u(0.9f, 1.3f);
+    l.lamps_on_share = u(0.4f, 0.7f);
+    l.exposure = u(0.65f, 0.95f);
     l.noise_sigma = u(4.0f, 7.0f);
   } else {
     l.ambient = u(0.15f, 0.3f);
@@ -198,8 +201,8 @@ struct Renderer::Impl {
       vertical_light[k].create(vh, vw, CV_32F);
       for (int y = 0; y < vh; ++y)
         for (int x = 0; x < vw; ++x)
-          vertical_light[k].at<float>(y, x) =
-              verticalLightExact(Eigen::Vector3f(x / kVerticalTpm, y / kVerticalTpm, 1.0f), normals[k]);
+          vertical_light[k].at<float>(y, x) = verticalLightExact(
+              Eigen::Vector3f(x / kVerticalTpm, y / kVerticalTpm, 1.0f), normals[k]);
     }
     paint_mask_w = static_cast<int>(std::ceil(g.size.x() * 2.0)) + 1;
     paint_mask_h = static_cast<int>(std::ceil(g.size.y() * 2.0)) + 1;
@@ -212,7 +215,8 @@ struct Renderer::Impl {
           const int cx = static_cast<int>(x / tpm * 2.0f), cy = static_cast<int>(y / tpm * 2.0f);
           for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
-              const int mx = std::clamp(cx + dx, 0, paint_mask_w - 1), my = std::clamp(cy + dy, 0, paint_mask_h - 1);
+              const int mx = std::clamp(cx + dx, 0, paint_mask_w - 1),
+                        my = std::clamp(cy + dy, 0, paint_mask_h - 1);
               paint_mask[static_cast<size_t>(my) * paint_mask_w + mx] = 1;
             }
         }
@@ -297,19 +301,21 @@ struct Renderer::Impl {
   float verticalLight(const Eigen::Vector3f& p, const Eigen::Vector3f& n) const {
     const int k = n.x() > 0.5f ? 0 : n.x() < -0.5f ? 1 : n.y() > 0.5f ? 2 : 3;
     const float h = std::clamp(p.z() / static_cast<float>(g.ceiling_height), 0.0f, 1.0f);
-    return bilinearF(vertical_light[k], p.x() * kVerticalTpm, p.y() * kVerticalTpm) * (0.8f + 0.5f * h * h);
+    return bilinearF(vertical_light[k], p.x() * kVerticalTpm, p.y() * kVerticalTpm) *
+           (0.8f + 0.5f * h * h);
   }
   // A parked car's lower box (cars stand along y): wheels on the sides, a dark sill and
   // underbody, lamps at the ends.
-  static Eigen::Vector3f carBodyAlbedo(const Box& b, const Eigen::Vector3f& p, const Eigen::Vector3f& n) {
+  static Eigen::Vector3f carBodyAlbedo(const Box& b, const Eigen::Vector3f& p,
+                                       const Eigen::Vector3f& n) {
     const Eigen::Vector3f dark(0.025f, 0.025f, 0.028f);
     if (std::abs(n.x()) > 0.5f) {
       const float wheel_y = std::min(p.y() - b.lo.y(), b.hi.y() - p.y()) - 0.85f;
       const float dz = p.z() - 0.32f;
       const float r2 = wheel_y * wheel_y + dz * dz;
       if (r2 < 0.17f * 0.17f) return Eigen::Vector3f(0.35f, 0.35f, 0.36f);  // rim
-      if (r2 < 0.32f * 0.32f) return dark;                                     // tyre
-      if (r2 < 0.36f * 0.36f) return 0.15f * b.albedo + dark;                  // wheel arch
+      if (r2 < 0.32f * 0.32f) return dark;                                  // tyre
+      if (r2 < 0.36f * 0.36f) return 0.15f * b.albedo + dark;               // wheel arch
       if (p.z() < 0.2f) return dark;
       if (p.z() < 0.28f) return 0.5f * b.albedo;
       return b.albedo;
@@ -476,14 +482,14 @@ struct Renderer::Impl {
             const float shade = bilinearF(L.floor_shade, p.x() * stpm - 0.5f, p.y() * stpm - 0.5f);
             albedo = g.floor_albedo * (shade * (0.45f + 0.95f * c));
             if (paintNear(p.x(), p.y())) {
-            const float wpaint =
-                L.paint_white.sample(p.x() * ptpm - 0.5f, p.y() * ptpm - 0.5f, fp * ptpm);
-            if (wpaint > 0.002f)
-              albedo += wpaint * 0.95f * (Eigen::Vector3f(0.86f, 0.86f, 0.84f) - albedo);
-            const float ypaint =
-                L.paint_yellow.sample(p.x() * ptpm - 0.5f, p.y() * ptpm - 0.5f, fp * ptpm);
-            if (ypaint > 0.002f)
-              albedo += ypaint * 0.95f * (Eigen::Vector3f(0.88f, 0.7f, 0.1f) - albedo);
+              const float wpaint =
+                  L.paint_white.sample(p.x() * ptpm - 0.5f, p.y() * ptpm - 0.5f, fp * ptpm);
+              if (wpaint > 0.002f)
+                albedo += wpaint * 0.95f * (Eigen::Vector3f(0.86f, 0.86f, 0.84f) - albedo);
+              const float ypaint =
+                  L.paint_yellow.sample(p.x() * ptpm - 0.5f, p.y() * ptpm - 0.5f, fp * ptpm);
+              if (ypaint > 0.002f)
+                albedo += ypaint * 0.95f * (Eigen::Vector3f(0.88f, 0.7f, 0.1f) - albedo);
             }
             for (const int di : cell(decal_grid, p.x(), p.y())) {
               const Decal& dc = L.floor_decals[di];
@@ -519,7 +525,8 @@ struct Renderer::Impl {
           for (int ch = 0; ch < 3; ++ch) {
             // BGR output.
             const int idx = std::min(kLutSize - 1, static_cast<int>(albedo[2 - ch] * scale));
-            out[3 * x + ch] = cv::saturate_cast<uint8_t>(gamma_lut[std::max(0, idx)] + sigma * n3[ch]);
+            out[3 * x + ch] =
+                cv::saturate_cast<uint8_t>(gamma_lut[std::max(0, idx)] + sigma * n3[ch]);
           }
         }
       }

@@ -1,0 +1,70 @@
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+#include "io/sequence.h"
+#include "sim/dataset_writer.h"
+
+namespace parkloc::sim {
+namespace {
+
+TEST(DatasetWriter, WritesALoadableSequence) {
+  namespace fs = std::filesystem;
+  const fs::path out =
+      fs::temp_directory_path() / ("parkloc_sim_writer_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  Scenario s = demoScenario();
+  s.garages[0].slots_per_row = 9;
+  DatasetOptions options;
+  options.out_dir = out.string();
+  options.max_frames = 2;
+  size_t last_done = 0;
+  const DatasetStats stats = writeDataset(s, options, [&](size_t done, size_t total) {
+    EXPECT_LE(done, total);
+    last_done = done;
+  });
+  EXPECT_EQ(stats.sequences, 1);
+  EXPECT_EQ(stats.frame_sets, 2);
+  EXPECT_EQ(stats.images, 8);
+  EXPECT_EQ(last_done, 2u);
+  const auto plans = planSequences(s);
+  ASSERT_EQ(plans.size(), 1u);
+  const io::Sequence seq((out / "sequences" / plans[0].name).string());
+  EXPECT_EQ(seq.timestamps().size(), 2u);
+  EXPECT_EQ(seq.cameras().size(), 4u);
+  EXPECT_EQ(seq.groundTruth().size(), 2u);
+  EXPECT_GT(seq.odometry().size(), 2u);
+  EXPECT_GT(seq.map().size(), 10u);
+  int instances = 0;
+  for (const auto& cam : seq.cameras()) {
+    const auto labels = seq.loadLabels(1, cam);
+    ASSERT_TRUE(labels.has_value());
+    instances += static_cast<int>(labels->instances.size());
+    EXPECT_FALSE(seq.loadImage(1, cam).empty());
+    EXPECT_TRUE(fs::exists(out / "sequences" / plans[0].name / "labels" / cam /
+                           (io::timestampStem(0.1) + ".txt")));
+  }
+  EXPECT_GT(instances, 0);
+  const auto meta = nlohmann::json::parse(seq.metaJson());
+  EXPECT_EQ(meta.at("split"), "test");
+  EXPECT_EQ(meta.at("condition"), "bright");
+  std::ifstream splits(out / "splits.json");
+  const auto sj = nlohmann::json::parse(splits);
+  EXPECT_EQ(sj.at("test").size(), 1u);
+  fs::remove_all(out);
+}
+
+TEST(DatasetWriter, RejectsBadOptions) {
+  DatasetOptions options;
+  EXPECT_THROW(writeDataset(demoScenario(), options), InputError);
+  options.out_dir = "/tmp/x";
+  options.jobs = 0;
+  EXPECT_THROW(writeDataset(demoScenario(), options), InputError);
+}
+
+}  // namespace
+}  // namespace parkloc::sim

@@ -11,17 +11,29 @@ GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOption
   Eigen::Vector2d forward = axis.head<2>();
   if (forward.norm() < 1e-6) forward = Eigen::Vector2d::UnitX();  // looking straight down
   forward.normalize();
-  // Seen from above with the camera's heading up the view: right is heading turned -90 deg.
-  right_ = Eigen::Vector2d(forward.y(), -forward.x());
-  toward_ = -forward;
+  // The floor ahead of the camera: `near` to `far` along its heading, `half_width` to each
+  // side. The view is axis-aligned with the vehicle (x to the right of the view, y up), seen
+  // from above: painted numbers at the slot ends read along the aisle, i.e. along the
+  // vehicle's x axis, so they appear horizontal (or upside down) in every camera's view,
+  // which suits the detector far better than text standing at 90 degrees.
+  const Eigen::Vector2d side(-forward.y(), forward.x());
   const Eigen::Vector2d foot = camera.vehicle_from_camera.translation().head<2>();
-  origin_ = foot + forward * options.far - right_ * options.half_width;
+  Eigen::Vector2d lo(1e9, 1e9), hi(-1e9, -1e9);
+  for (double d : {options.near, options.far})
+    for (double l : {-options.half_width, options.half_width}) {
+      const Eigen::Vector2d g = foot + forward * d + side * l;
+      lo = lo.cwiseMin(g);
+      hi = hi.cwiseMax(g);
+    }
+  right_ = Eigen::Vector2d::UnitX();
+  toward_ = -Eigen::Vector2d::UnitY();
+  origin_ = Eigen::Vector2d(lo.x(), hi.y());
 
   auto roundUp32 = [](double v) {
     return std::max(32, static_cast<int>(std::ceil(v / 32.0)) * 32);
   };
-  const int cols = roundUp32(2 * options.half_width / options.resolution);
-  const int rows = roundUp32((options.far - options.near) / options.resolution);
+  const int cols = roundUp32((hi.x() - lo.x()) / options.resolution);
+  const int rows = roundUp32((hi.y() - lo.y()) / options.resolution);
   map_x_.create(rows, cols, CV_32F);
   map_y_.create(rows, cols, CV_32F);
   const geometry::Rigid3 camera_from_vehicle = camera.vehicle_from_camera.inverse();

@@ -1,8 +1,8 @@
 #pragma once
-// A bird's-eye view of the floor for one fisheye camera: painted text appears as painted
-// (no lens distortion, no perspective, constant scale), which the detector and recognizer
-// (trained on ordinary scene text) read far better than the raw image at grazing angles.
-// View pixels map to ground points in the vehicle frame and back to raw image pixels, so
+// A bird's-eye view of the floor for one fisheye camera, aligned with the vehicle axes: painted
+// text appears as painted (no lens distortion, no perspective, constant scale), which the detector
+// and recognizer (trained on ordinary scene text) read far better than the raw image at grazing
+// angles. View pixels map to ground points in the vehicle frame and back to raw image pixels, so
 // everything found in the view is reported in raw pixels.
 #include <opencv2/core.hpp>
 #include <optional>

@@ -19,7 +19,7 @@ struct LexiconOptions {
   // Prior weight of "the text is not in the lexicon" against one for the lexicon as a
   // whole: the free reading enters the posterior's denominator times this weight. Below 1
   // because the lexicon holds the texts that are really there.
-  double open_world_weight = 0.2;
+  double open_world_weight = 0.05;
 };
 
 struct LexiconDecoding {

@@ -161,7 +161,7 @@ Drive planDrive(const Garage& g, int level, const DriveSpec& spec, uint64_t seed
         L.slots[free[std::uniform_int_distribution<size_t>(0, free.size() - 1)(rng)]];
     const double R = 4.5;
     int dir = std::uniform_int_distribution<int>(0, 1)(rng) ? 1 : -1;
-    const double approach = uniform(12.0, 20.0);
+    const double approach = uniform(7.0, 13.0);
     const double x_reverse = slot.center.x() + dir * R;
     if (x_reverse > g.size.x() - 1.0 || x_reverse < 1.0) dir = -dir;
     const double x_rev = slot.center.x() + dir * R;

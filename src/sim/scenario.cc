@@ -154,40 +154,39 @@ std::string resolveFontPath(const std::string& font) {
 
 Scenario defaultScenario() {
   using N = NumberingScheme;
-  const DriveSpec tour_bright{"tour", "bright", "", 22.0};
-  const DriveSpec park_weak{"park", "weak", "", 22.0};
-  const DriveSpec park_bright{"park", "bright", "", 22.0};
-  const DriveSpec tour_weak{"tour", "weak", "", 22.0};
-  const DriveSpec tour_blur{"tour", "blur", "", 22.0};
-  const DriveSpec park_blur{"park", "blur", "", 22.0};
+  auto drive = [](const char* route, const char* condition) {
+    return DriveSpec{route, condition, "", 12.0};
+  };
   Scenario s;
   s.name = "default";
   s.seed = 2026;
-  // Train and val share schemes three_digit / level_dash / plain and bold sans fonts; test
-  // uses zone_letter numbers and serif / mono fonts that train never sees.
+  // Train and val share schemes three_digit / level_dash / plain and sans fonts; test uses
+  // zone_letter numbers and serif / mono fonts that train never sees. Every split has every
+  // condition; the test garage has one drive per condition.
   s.garages = {
       makeGarage("g01", "train", {"B1", "B2"}, 2, 15, N::kThreeDigit, 1, 0.45,
-                 {"DejaVuSans-Bold.ttf", "LiberationSans-Bold.ttf"}, {tour_bright, park_weak}),
+                 {"DejaVuSans-Bold.ttf", "LiberationSans-Bold.ttf"}, {drive("tour", "bright")}),
       makeGarage("g02", "train", {"B1"}, 3, 12, N::kLevelDash, 101, 0.40,
-                 {"DejaVuSansCondensed-Bold.ttf"}, {tour_weak, park_bright}),
+                 {"DejaVuSansCondensed-Bold.ttf"}, {drive("park", "weak")}),
       makeGarage("g03", "train", {"B2", "B3"}, 2, 18, N::kThreeDigit, 50, 0.55,
-                 {"FreeSansBold.ttf", "LiberationSansNarrow-Bold.ttf"}, {tour_blur, park_bright}),
+                 {"FreeSansBold.ttf", "LiberationSansNarrow-Bold.ttf"}, {drive("tour", "blur")}),
       makeGarage("g04", "train", {"P1"}, 2, 12, N::kLevelDash, 1, 0.35, {"LiberationSans-Bold.ttf"},
-                 {tour_bright, park_blur}),
+                 {drive("park", "bright")}),
       makeGarage("g05", "train", {"B1"}, 3, 15, N::kThreeDigit, 200, 0.50,
-                 {"DejaVuSansMono-Bold.ttf", "DejaVuSans-Bold.ttf"}, {tour_weak, park_weak}),
+                 {"DejaVuSansMono-Bold.ttf", "DejaVuSans-Bold.ttf"}, {drive("tour", "weak")}),
       makeGarage("g06", "train", {"B1", "B2"}, 2, 15, N::kLevelDash, 1, 0.45,
-                 {"LiberationMono-Bold.ttf", "FreeSansBold.ttf"}, {tour_bright, park_blur}),
+                 {"LiberationMono-Bold.ttf", "FreeSansBold.ttf"}, {drive("park", "blur")}),
       makeGarage("g07", "train", {"L2"}, 2, 21, N::kThreeDigit, 300, 0.60,
                  {"DejaVuSansCondensed-Bold.ttf", "LiberationSansNarrow-Bold.ttf"},
-                 {tour_blur, park_weak}),
+                 {drive("tour", "bright")}),
       makeGarage("g08", "val", {"B1"}, 2, 15, N::kPlain, 100, 0.45,
-                 {"DejaVuSans-Bold.ttf", "LiberationSans-Regular.ttf"}, {tour_bright, park_weak}),
+                 {"DejaVuSans-Bold.ttf", "LiberationSans-Regular.ttf"},
+                 {drive("tour", "bright"), drive("park", "blur")}),
       makeGarage("g09", "val", {"B2"}, 2, 12, N::kLevelDash, 1, 0.40, {"FreeSans.ttf"},
-                 {tour_blur, park_bright}),
+                 {drive("tour", "weak")}),
       makeGarage("g10", "test", {"B1", "B2"}, 2, 15, N::kZoneLetter, 1, 0.45,
                  {"LiberationSerif-Bold.ttf", "FreeMonoBold.ttf", "DejaVuSerif-Bold.ttf"},
-                 {tour_bright, park_weak, tour_blur}),
+                 {drive("tour", "bright"), drive("park", "weak"), drive("tour", "blur")}),
   };
   return s;
 }

@@ -57,7 +57,9 @@ std::string writeSequence(const std::string& root, const std::string& name) {
 class EvaluationTest : public testing::Test {
  protected:
   void SetUp() override {
-    root_ = testing::TempDir() + "/parkloc_eval_dataset";
+    // One folder per test process: ctest runs the tests of this fixture in parallel.
+    root_ = testing::TempDir() + "/parkloc_eval_dataset_" +
+            testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(root_);
     writeSequence(root_, "seq_a");
     std::ofstream(root_ + "/splits.json") << R"({"train": [], "test": ["seq_a"]})";

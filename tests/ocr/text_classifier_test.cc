@@ -1,6 +1,7 @@
 #include "ocr/text_classifier.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <opencv2/imgproc.hpp>
@@ -67,7 +68,7 @@ TEST(TextClassifier, LearnsSeparableClassesAndSurvivesASaveLoadRoundTrip) {
   const TextClassifier classifier = TextClassifier::train(x, labels, features);
 
   const auto path =
-      (std::filesystem::temp_directory_path() / "parkloc_classifier_test.yml").string();
+      (std::filesystem::temp_directory_path() / ("parkloc_classifier_test_" + std::to_string(::getpid()) + ".yml")).string();
   classifier.save(path);
   const TextClassifier loaded = TextClassifier::load(path);
   std::filesystem::remove(path);
@@ -88,7 +89,7 @@ TEST(TextClassifier, LearnsSeparableClassesAndSurvivesASaveLoadRoundTrip) {
 TEST(TextClassifier, MissingOrForeignFileIsAnInputError) {
   EXPECT_THROW(TextClassifier::load("/nonexistent/classifier.yml"), InputError);
   const auto path =
-      (std::filesystem::temp_directory_path() / "parkloc_not_a_classifier.yml").string();
+      (std::filesystem::temp_directory_path() / ("parkloc_not_a_classifier_" + std::to_string(::getpid()) + ".yml")).string();
   {
     cv::FileStorage fs(path, cv::FileStorage::WRITE);
     fs << "kind"

@@ -77,6 +77,16 @@ class CalibReader {
     require(parent, camera, field, node);
     if (!node.isMap() || node["rows"].empty() || node["cols"].empty() || node["data"].empty())
       fail(camera, field, fmt::format("expected a {}x{} opencv-matrix", rows, cols));
+    // The size before the data: OpenCV allocates rows x cols before it counts the data, so a
+    // forged size would allocate gigabytes (found by fuzz/fuzz_calibration).
+    const cv::FileNode rows_node = node["rows"];
+    const cv::FileNode cols_node = node["cols"];
+    if (!rows_node.isInt() || !cols_node.isInt())
+      fail(camera, field, fmt::format("expected a {}x{} opencv-matrix", rows, cols));
+    if (static_cast<int>(rows_node) != rows || static_cast<int>(cols_node) != cols)
+      fail(camera, field,
+           fmt::format("expected a {}x{} matrix, got {}x{}", rows, cols,
+                       static_cast<int>(rows_node), static_cast<int>(cols_node)));
     cv::Mat m;
     try {
       node >> m;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -41,6 +42,15 @@ std::string string(const json& obj, const char* key, const std::string& path,
   if (!v.is_string())
     fail(path, fmt::format("{}field '{}': expected a string, got {}", where, key, v.type_name()));
   return v.get<std::string>();
+}
+
+// An image width or height: a number that fits an int (casting 1e300 to int is undefined
+// behaviour; found by fuzz/fuzz_labels).
+int imageSize(const json& doc, const char* key, const std::string& path) {
+  const double value = number(doc, key, path, "");
+  if (!(value >= 0.0 && value <= std::numeric_limits<int>::max()))
+    fail(path, fmt::format("field '{}': {} is not an image size", key, value));
+  return static_cast<int>(value);
 }
 
 LabelInstance readInstance(const json& j, const std::string& path, size_t index) {
@@ -86,13 +96,17 @@ ImageLabels loadLabels(const std::string& path) {
     doc = json::parse(text.str());
   } catch (const json::parse_error& e) {
     fail(path, fmt::format("malformed JSON at byte {}", e.byte));
+  } catch (const json::exception& e) {
+    // A number too large for a double ("1e400") is out_of_range, not parse_error (found by
+    // fuzz/fuzz_labels).
+    fail(path, fmt::format("malformed JSON ({})", e.what()));
   }
   if (!doc.is_object()) fail(path, "expected a JSON object");
   ImageLabels labels;
   labels.camera = string(doc, "camera", path, "");
   labels.timestamp = number(doc, "timestamp", path, "");
-  labels.width = static_cast<int>(number(doc, "width", path, ""));
-  labels.height = static_cast<int>(number(doc, "height", path, ""));
+  labels.width = imageSize(doc, "width", path);
+  labels.height = imageSize(doc, "height", path);
   const json& instances = field(doc, "instances", path, "");
   if (!instances.is_array()) fail(path, "field 'instances': expected an array");
   for (size_t i = 0; i < instances.size(); ++i)

@@ -14,6 +14,13 @@ namespace {
 
 using nlohmann::json;
 
+// The "type" member when it is a string, else "" (json::value would throw type_error 302 for
+// a number; found by fuzz/fuzz_map).
+std::string typeOf(const json& object) {
+  const auto it = object.find("type");
+  return it != object.end() && it->is_string() ? it->get<std::string>() : "";
+}
+
 class FeatureReader {
  public:
   FeatureReader(const std::string& source, size_t index, const json& feature)
@@ -56,7 +63,7 @@ class FeatureReader {
 
   map::Landmark read() {
     if (!feature_.is_object()) fail("expected a JSON object");
-    if (feature_.value("type", "") != "Feature") fail("'type' must be \"Feature\"");
+    if (typeOf(feature_) != "Feature") fail("'type' must be \"Feature\"");
     const auto props_it = feature_.find("properties");
     if (props_it == feature_.end() || !props_it->is_object()) fail("missing 'properties' object");
     const json& props = *props_it;
@@ -68,7 +75,7 @@ class FeatureReader {
 
     const auto geometry = feature_.find("geometry");
     if (geometry == feature_.end() || !geometry->is_object()) fail("missing 'geometry' object");
-    if (geometry->value("type", "") != "Point") fail("geometry: 'type' must be \"Point\"");
+    if (typeOf(*geometry) != "Point") fail("geometry: 'type' must be \"Point\"");
     const auto coordinates = geometry->find("coordinates");
     if (coordinates == geometry->end()) fail("geometry: missing 'coordinates'");
     l.position = vectorOf(*coordinates, "geometry 'coordinates'", true);
@@ -116,8 +123,12 @@ map::HdMap parseMap(const std::string& geojson_text, const std::string& source_n
   } catch (const json::parse_error& e) {
     throw InputError(fmt::format("map {}: malformed JSON at byte {}: {}", source_name, e.byte,
                                  stripJsonExceptionPrefix(e.what())));
+  } catch (const json::exception& e) {
+    // A number too large for a double ("1e400") is out_of_range, not parse_error.
+    throw InputError(
+        fmt::format("map {}: malformed JSON: {}", source_name, stripJsonExceptionPrefix(e.what())));
   }
-  if (!doc.is_object() || doc.value("type", "") != "FeatureCollection")
+  if (!doc.is_object() || typeOf(doc) != "FeatureCollection")
     throw InputError(fmt::format("map {}: expected a GeoJSON FeatureCollection", source_name));
   const auto features = doc.find("features");
   if (features == doc.end() || !features->is_array())

@@ -7,12 +7,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <opencv2/imgcodecs.hpp>
 #include <set>
 #include <sstream>
 
 #include "common/error.h"
 #include "io/calibration_yaml.h"
+#include "io/image_file.h"
 #include "io/map_geojson.h"
 
 namespace parkloc::io {
@@ -151,13 +151,10 @@ cv::Mat Sequence::loadImage(size_t frame, const std::string& camera, std::string
   const auto size = fs::file_size(path, ec);
   if (ec) return failed(fmt::format("{}: cannot read ({})", path, ec.message()));
   if (size == 0) return failed(fmt::format("{}: empty file", path));
-  cv::Mat image;
-  try {
-    image = cv::imread(path, cv::IMREAD_COLOR);
-  } catch (const cv::Exception& e) {
-    return failed(fmt::format("{}: cannot decode ({})", path, e.err));
-  }
-  if (image.empty()) return failed(fmt::format("{}: cannot decode the image", path));
+  // JPEG or PNG only, the header size checked before decoding (io/image_file.h).
+  std::string reason;
+  cv::Mat image = readFrameImage(path, &reason);
+  if (image.empty()) return failed(reason);
   if (why) why->clear();
   return image;
 }

@@ -157,13 +157,24 @@ Drive planDrive(const Garage& g, int level, const DriveSpec& spec, uint64_t seed
     for (size_t i = 0; i < L.slots.size(); ++i)
       if (!L.slots[i].occupied) free.push_back(i);
     if (free.empty()) free.push_back(0);
-    const Slot& slot =
-        L.slots[free[std::uniform_int_distribution<size_t>(0, free.size() - 1)(rng)]];
+    // The reverse arc starts R past the slot; the car (front bumper 3.7 m ahead of the rear
+    // axle, rear camera 1 m behind) must stay inside the walls there: pick a slot and a
+    // direction that allow it.
     const double R = 4.5;
     int dir = std::uniform_int_distribution<int>(0, 1)(rng) ? 1 : -1;
     const double approach = uniform(7.0, 13.0);
-    const double x_reverse = slot.center.x() + dir * R;
-    if (x_reverse > g.size.x() - 1.0 || x_reverse < 1.0) dir = -dir;
+    auto fits = [&](const Slot& s, int d) {
+      const double x_rev = s.center.x() + d * R;
+      return x_rev + d * 4.2 > 0.5 && x_rev + d * 4.2 < g.size.x() - 0.5 && x_rev - d * 1.5 > 0.5 &&
+             x_rev - d * 1.5 < g.size.x() - 0.5;
+    };
+    size_t pick = std::uniform_int_distribution<size_t>(0, free.size() - 1)(rng);
+    for (size_t tries = 0;
+         tries < free.size() && !fits(L.slots[free[pick]], dir) && !fits(L.slots[free[pick]], -dir);
+         ++tries)
+      pick = (pick + 1) % free.size();
+    const Slot& slot = L.slots[free[pick]];
+    if (!fits(slot, dir)) dir = -dir;
     const double x_rev = slot.center.x() + dir * R;
     const double x_start = std::clamp(x_rev - dir * approach, 1.5, g.size.x() - 1.5);
     const double y_lane = g.aisle_y[slot.aisle] - 0.8 * slot.side;

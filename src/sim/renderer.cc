@@ -16,6 +16,7 @@ constexpr int kTile = 16;
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
 float bilinearF(const cv::Mat& m, float x, float y) {
+  if (!(std::isfinite(x) && std::isfinite(y))) x = y = 0.0f;  // never index with NaN
   x = std::clamp(x, 0.0f, static_cast<float>(m.cols - 1) - 1e-3f);
   y = std::clamp(y, 0.0f, static_cast<float>(m.rows - 1) - 1e-3f);
   const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
@@ -439,6 +440,10 @@ struct Renderer::Impl {
               hit_box = bi;
               hit_axis = tnear == nx ? 0 : (tnear == ny ? 1 : 2);
             }
+          }
+          if (!(t > 0.0f && t < 1e4f)) {  // camera outside the level: nothing to see
+            out[3 * x] = out[3 * x + 1] = out[3 * x + 2] = 0;
+            continue;
           }
           const Eigen::Vector3f p = o + t * d;
           const float footprint = t * cr.pixel_angle[i];

@@ -67,8 +67,9 @@ TEST(TextClassifier, LearnsSeparableClassesAndSurvivesASaveLoadRoundTrip) {
   cv::vconcat(rows, x);
   const TextClassifier classifier = TextClassifier::train(x, labels, features);
 
-  const auto path =
-      (std::filesystem::temp_directory_path() / ("parkloc_classifier_test_" + std::to_string(::getpid()) + ".yml")).string();
+  const auto path = (std::filesystem::temp_directory_path() /
+                     ("parkloc_classifier_test_" + std::to_string(::getpid()) + ".yml"))
+                        .string();
   classifier.save(path);
   const TextClassifier loaded = TextClassifier::load(path);
   std::filesystem::remove(path);
@@ -88,8 +89,9 @@ TEST(TextClassifier, LearnsSeparableClassesAndSurvivesASaveLoadRoundTrip) {
 
 TEST(TextClassifier, MissingOrForeignFileIsAnInputError) {
   EXPECT_THROW(TextClassifier::load("/nonexistent/classifier.yml"), InputError);
-  const auto path =
-      (std::filesystem::temp_directory_path() / ("parkloc_not_a_classifier_" + std::to_string(::getpid()) + ".yml")).string();
+  const auto path = (std::filesystem::temp_directory_path() /
+                     ("parkloc_not_a_classifier_" + std::to_string(::getpid()) + ".yml"))
+                        .string();
   {
     cv::FileStorage fs(path, cv::FileStorage::WRITE);
     fs << "kind"

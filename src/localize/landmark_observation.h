@@ -15,6 +15,10 @@ struct LandmarkObservation {
   // Map x, y; z is the height above the floor the vehicle stands on.
   std::array<Eigen::Vector3d, 4> map_corners;
   int tag = -1;  // caller's index (e.g. into the association list)
+  // false: only the polygon's centre is a measurement (2 residuals), for detectors whose
+  // boxes hold the text but whose corners are not the text's (padded, unsheared boxes of
+  // text seen at a grazing angle); the centre stays where the ink is.
+  bool use_corners = true;
 };
 
 }  // namespace parkloc::localize

@@ -574,6 +574,7 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
   for (const auto& input : frame.cameras)
     if (!rig.find(input.camera))
       result.warnings.push_back("camera '" + input.camera + "' is not in the rig: ignored");
+  std::vector<bool> supplied(rig.cameras.size(), false);  // instances came with the frame
   for (size_t c = 0; c < rig.cameras.size(); ++c) {
     const auto& camera = rig.cameras[c];
     CameraResult camera_result;
@@ -590,6 +591,7 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
     }
     if (input->instances) {
       camera_result.instances = *input->instances;
+      supplied[c] = true;
     } else if (input->image.empty()) {
       camera_result.image_ok = false;
       result.warnings.push_back("camera '" + camera.name + "': image missing or corrupt, skipped");
@@ -634,6 +636,9 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
   std::vector<LandmarkObservation> inside, outside;
   for (size_t c = 0; c < result.cameras.size(); ++c) {
     const auto& instances = result.cameras[c].instances;
+    const bool use_corners =
+        options.polygon_model == PipelineOptions::PolygonModel::kCorners ||
+        (options.polygon_model == PipelineOptions::PolygonModel::kAuto && supplied[c]);
     for (size_t i = 0; i < instances.size(); ++i) {
       const auto& instance = instances[i];
       Association a;
@@ -662,6 +667,7 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
           o.pixels = toEigen(instance.polygon);
           o.map_corners = floors.cornersAboveFloor(landmark);
           o.tag = tag;
+          o.use_corners = use_corners;
           return o;
         };
         LandmarkObservation o;

@@ -16,6 +16,24 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 double huberCost(double e, double k) { return e <= k ? 0.5 * e * e : k * (e - 0.5 * k); }
 
+Eigen::Vector2d observedCentre(const LandmarkObservation& o) {
+  return 0.25 * (o.pixels[0] + o.pixels[1] + o.pixels[2] + o.pixels[3]);
+}
+
+// The mean of the projected corners (what a box centre measures) and its Jacobian.
+std::optional<CornerProjection> projectCentre(const geometry::RigCamera& camera,
+                                              const geometry::Pose2& pose,
+                                              const LandmarkObservation& o) {
+  CornerProjection c{Eigen::Vector2d::Zero(), Eigen::Matrix<double, 2, 3>::Zero()};
+  for (int i = 0; i < 4; ++i) {
+    const auto p = projectMapCorner(camera, pose, o.map_corners[i]);
+    if (!p) return std::nullopt;
+    c.pixel += 0.25 * p->pixel;
+    c.J_pixel_pose += 0.25 * p->J_pixel_pose;
+  }
+  return c;
+}
+
 struct NormalEquations {
   Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
   Eigen::Vector3d g = Eigen::Vector3d::Zero();
@@ -31,6 +49,19 @@ NormalEquations accumulate(const geometry::Rig& rig, const std::vector<LandmarkO
   for (size_t o = 0; o < obs.size(); ++o) {
     if (!use[o]) continue;
     const auto& camera = rig.cameras[obs[o].camera];
+    if (!obs[o].use_corners) {
+      const auto c = projectCentre(camera, pose, obs[o]);
+      if (!c) continue;
+      const Eigen::Vector2d r = c->pixel - observedCentre(obs[o]);
+      const double e = r.norm();
+      const double w = e <= huber ? 1.0 : huber / e;
+      n.H += w * c->J_pixel_pose.transpose() * c->J_pixel_pose;
+      n.g += w * c->J_pixel_pose.transpose() * r;
+      n.cost += huberCost(e, huber);
+      n.squared_error += e * e;
+      ++n.corners;
+      continue;
+    }
     for (int i = 0; i < 4; ++i) {
       const auto p = projectMapCorner(camera, pose, obs[o].map_corners[i]);
       if (!p) continue;
@@ -49,6 +80,10 @@ NormalEquations accumulate(const geometry::Rig& rig, const std::vector<LandmarkO
 
 double meanCornerError(const geometry::RigCamera& camera, const LandmarkObservation& o,
                        const geometry::Pose2& pose) {
+  if (!o.use_corners) {
+    const auto c = projectCentre(camera, pose, o);
+    return c ? (c->pixel - observedCentre(o)).norm() : kInfinity;
+  }
   double sum = 0.0;
   for (int i = 0; i < 4; ++i) {
     const auto p = projectMapCorner(camera, pose, o.map_corners[i]);
@@ -126,7 +161,7 @@ SolverResult refinePose(const geometry::Rig& rig, const std::vector<LandmarkObse
   NormalEquations current = accumulate(rig, obs, use, result.pose, options.huber_threshold_px);
   for (int iter = 0; iter < options.max_iterations; ++iter) {
     result.iterations = iter + 1;
-    if (current.corners < 3) break;
+    if (current.corners < 2) break;
     Eigen::Matrix3d A = current.H;
     A.diagonal() += lambda * current.H.diagonal().cwiseMax(1e-9);
     const Eigen::Vector3d step = A.ldlt().solve(-current.g);
@@ -157,8 +192,8 @@ SolverResult refinePose(const geometry::Rig& rig, const std::vector<LandmarkObse
   result.inlier = use;
   for (size_t o = 0; o < obs.size(); ++o)
     result.residual_px[o] = meanCornerError(rig.cameras[obs[o].camera], obs[o], result.pose);
-  if (current.corners < 3) {
-    result.failure = "fewer than 3 corners project into their cameras";
+  if (current.corners < 2) {
+    result.failure = "fewer than 2 points project into their cameras";
     return result;
   }
   result.rms_px = std::sqrt(current.squared_error / current.corners);
@@ -245,7 +280,26 @@ SolverResult solvePose(const geometry::Rig& rig, const std::vector<LandmarkObser
     inliers[o] = result.residual_px[o] < options.inlier_threshold_px;
   if (inliers != best_inliers && std::count(inliers.begin(), inliers.end(), true) > 0)
     result = refinePose(rig, obs, result.pose, options, inliers);
-  return result;
+  if (!result.ok || options.centre_fallback_px <= 0.0) return result;
+
+  // A text whose corners disagree but whose centre fits (a detector box around sheared
+  // floor text) still measures its centre.
+  std::vector<LandmarkObservation> mixed = obs;
+  std::vector<bool> use = result.inlier;
+  bool added = false;
+  for (size_t o = 0; o < obs.size(); ++o) {
+    if (result.inlier[o] || !obs[o].use_corners) continue;
+    mixed[o].use_corners = false;
+    if (meanCornerError(rig.cameras[obs[o].camera], mixed[o], result.pose) <
+        options.centre_fallback_px) {
+      use[o] = true;
+      added = true;
+    }
+  }
+  if (!added) return result;
+  SolverResult with_centres = refinePose(rig, mixed, result.pose, options, use);
+  if (!with_centres.ok) return result;
+  return with_centres;
 }
 
 }  // namespace parkloc::localize

@@ -214,7 +214,9 @@ TEST_F(PipelineTest, RecoversFromKidnappingWithinThreeSeconds) {
     const double e = positionError(r, drive.truth(r.timestamp));
     if (r.timestamp >= drive.jump_time && recovered_at < 0.0 && e < 0.05)
       recovered_at = r.timestamp;
-    if (recovered_at >= 0.0) EXPECT_LT(e, 0.05) << "at " << r.timestamp;
+    if (recovered_at >= 0.0) {
+      EXPECT_LT(e, 0.05) << "at " << r.timestamp;
+    }
   }
   EXPECT_TRUE(reinitialised);
   ASSERT_GE(recovered_at, 0.0);

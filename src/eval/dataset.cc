@@ -68,4 +68,12 @@ std::vector<std::string> splitSequences(const std::string& dataset_dir, const st
   return out;
 }
 
+std::string sequenceLevel(const std::string& meta_json) {
+  const nlohmann::json meta = nlohmann::json::parse(meta_json, nullptr, false);
+  if (meta.is_object() && meta.contains("level") && meta["level"].is_string()) {
+    return meta["level"].get<std::string>();
+  }
+  return "";
+}
+
 }  // namespace parkloc::eval

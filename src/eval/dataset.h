@@ -12,4 +12,8 @@ namespace parkloc::eval {
 // missing or malformed splits.json, an unknown split or a listed folder that does not exist.
 std::vector<std::string> splitSequences(const std::string& dataset_dir, const std::string& split);
 
+// The garage level a drive is on, from its meta.json text ("level"); empty when absent.
+// Parking numbers repeat from level to level, so the pipeline must be told which one.
+std::string sequenceLevel(const std::string& meta_json);
+
 }  // namespace parkloc::eval

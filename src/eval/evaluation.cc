@@ -11,6 +11,7 @@
 #include <set>
 
 #include "eval/conditions.h"
+#include "eval/dataset.h"
 #include "eval/dead_reckoning.h"
 #include "eval/tables.h"
 #include "io/sequence.h"
@@ -273,6 +274,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     if (frames == 0) continue;
     const double t0 = seq.timestamps().front(), t1 = seq.timestamps()[frames - 1];
 
+    const std::string level = options.level_from_meta ? sequenceLevel(seq.metaJson()) : "";
     std::vector<VariantRun> runs;
     for (VariantTally& tally : tallies) {
       VariantRun run;
@@ -282,8 +284,11 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         if (!start) continue;  // no ground truth to start from
         run.dead_reckoning = std::make_unique<DeadReckoning>(*start, t0);
       } else {
+        localize::PipelineOptions pipeline_options = tally.spec.options;
+        if (pipeline_options.level.empty()) pipeline_options.level = level;
+        if (!level.empty()) run.levels.insert(level);
         run.pipeline = std::make_unique<localize::Pipeline>(
-            seq.rig(), seq.map(), tally.spec.options,
+            seq.rig(), seq.map(), pipeline_options,
             tally.spec.source == Source::kSpotter ? spotter : nullptr);
       }
       runs.push_back(std::move(run));

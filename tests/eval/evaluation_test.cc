@@ -76,6 +76,12 @@ TEST_F(EvaluationTest, SplitListsTheSequenceFolders) {
   EXPECT_EQ(splitSequences(test[0], "test"), test);
 }
 
+TEST(Dataset, LevelFromMeta) {
+  EXPECT_EQ(sequenceLevel(R"({"level": "B2", "levels": ["B1", "B2"]})"), "B2");
+  EXPECT_EQ(sequenceLevel("{}"), "");
+  EXPECT_EQ(sequenceLevel("not json"), "");
+}
+
 TEST_F(EvaluationTest, BadSplitsAreInputErrorsNamingTheProblem) {
   try {
     splitSequences(root_, "validation");

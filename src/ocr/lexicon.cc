@@ -5,6 +5,28 @@
 #include <limits>
 
 namespace parkloc::ocr {
+namespace {
+
+// The look-alike group of a character; the character itself when it is in none.
+std::string lookAlikeGroup(const std::string& ch) {
+  static const std::vector<std::pair<std::string, std::string>> kGroups = {
+      {"0OoDQUu", "0"}, {"1Ili|", "1"}, {"5Ss", "5"}, {"8B", "8"},
+      {"2Zz", "2"},     {"6Gb", "6"},   {"9gq", "9"}};
+  if (ch.size() == 1)
+    for (const auto& [members, group] : kGroups)
+      if (members.find(ch[0]) != std::string::npos) return group;
+  return ch;
+}
+
+}  // namespace
+
+bool sameUpToLookAlikes(const std::string& a, const std::string& b) {
+  const auto ca = splitUtf8(a), cb = splitUtf8(b);
+  if (ca.size() != cb.size()) return false;
+  for (size_t i = 0; i < ca.size(); ++i)
+    if (ca[i] != cb[i] && lookAlikeGroup(ca[i]) != lookAlikeGroup(cb[i])) return false;
+  return true;
+}
 
 LexiconDecoding decodeWithLexicon(const CtcMatrix& probs, const Charset& charset,
                                   const std::vector<std::string>& candidates,
@@ -41,6 +63,9 @@ LexiconDecoding decodeWithLexicon(const CtcMatrix& probs, const Charset& charset
     seen.push_back(candidates[i]);
     sum += std::exp(log_probs[i] - best);
   }
+  if (options.look_alikes_are_the_entry &&
+      sameUpToLookAlikes(out.raw_text, candidates[out.best_index]))
+    raw_is_candidate = true;
   if (!raw_is_candidate && out.raw_log_prob > kNegInf)
     sum += options.open_world_weight * std::exp(out.raw_log_prob - best);
   out.posterior = 1.0 / sum;

@@ -20,7 +20,16 @@ struct LexiconOptions {
   // whole: the free reading enters the posterior's denominator times this weight. Below 1
   // because the lexicon holds the texts that are really there.
   double open_world_weight = 0.05;
+  // A free reading that differs from the best entry only by glyphs that look alike in some
+  // fonts ("BO07" for "B007", "BU01" for "B001", see sameUpToLookAlikes) is taken as that
+  // entry misread, not as evidence for an unknown text: it leaves the posterior's open-world
+  // term. Unseen fonts make exactly these confusions.
+  bool look_alikes_are_the_entry = true;
 };
+
+// True when `a` and `b` have the same length and every differing character pair is one of
+// the look-alike groups {0 O o D Q U u}, {1 I l i |}, {5 S s}, {8 B}, {2 Z z}, {6 G b}, {9 g q}.
+bool sameUpToLookAlikes(const std::string& a, const std::string& b);
 
 struct LexiconDecoding {
   std::string raw_text;        // greedy reading

@@ -162,5 +162,35 @@ TEST(Lexicon, AmbiguousCharacterIsResolvedByTheLexicon) {
   EXPECT_LT(d.posterior, 0.99);
 }
 
+TEST(Lexicon, LookAlikeMisreadIsTheEntry) {
+  // An unseen font's "0" read confidently as "O": the free reading "BO7" is far more probable
+  // than "B07", yet it differs only by a look-alike glyph, so the entry is accepted.
+  const Charset charset({"0", "7", "B", "O", "A"});
+  const int C = charset.classCount();
+  int steps = 0;
+  auto probs = spelled(*charset.encode("BO7"), C, 0.9f, &steps);
+  for (int t = 3; t < 5; ++t) {  // the "O" steps: "0" second best
+    probs[t * C + 4] = 0.8f;
+    probs[t * C + 1] = 0.12f;
+  }
+  const LexiconDecoding d = decodeWithLexicon({probs.data(), steps, C}, charset, {"B07", "A07"});
+  EXPECT_EQ(d.raw_text, "BO7");
+  EXPECT_TRUE(d.matched);
+  EXPECT_EQ(d.best_index, 0);
+
+  LexiconOptions strict;
+  strict.look_alikes_are_the_entry = false;
+  EXPECT_FALSE(
+      decodeWithLexicon({probs.data(), steps, C}, charset, {"B07", "A07"}, strict).matched);
+}
+
+TEST(Lexicon, LookAlikeGroupsDoNotMatchOtherCharacters) {
+  EXPECT_TRUE(sameUpToLookAlikes("BO07", "B007"));
+  EXPECT_TRUE(sameUpToLookAlikes("8U01", "B001"));
+  EXPECT_FALSE(sameUpToLookAlikes("B007", "B017"));
+  EXPECT_FALSE(sameUpToLookAlikes("B007", "B0071"));
+  EXPECT_FALSE(sameUpToLookAlikes("A007", "B007"));
+}
+
 }  // namespace
 }  // namespace parkloc::ocr

@@ -75,7 +75,6 @@ static void fuzzOne(const uint8_t* data, size_t size) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  fuzzOne(data, size);
-  parkloc::fuzz::checkNoDescriptorLeak();
+  parkloc::fuzz::withoutDescriptorLeak([&] { fuzzOne(data, size); });
   return 0;
 }

@@ -46,15 +46,22 @@ bool acceptsOnlyInputError(Parse&& parse) {
 
 // Catches leaked file descriptors, which LeakSanitizer does not see (a FILE* that a decoder
 // never closes stays reachable through libc's list of open files). The kernel hands out the
-// lowest free descriptor, so a probe that gets a higher number than it did after the first
-// input means that descriptors piled up in between. Call once at the end of every input.
-inline void checkNoDescriptorLeak() {
-  static int baseline = -1;
+// lowest free descriptor, so a probe after the input that gets a higher number than a probe
+// before it means that the input left a descriptor open. Measured around each input only:
+// libFuzzer itself keeps pipes to the symbolizer open between inputs.
+inline int lowestFreeDescriptor() {
   const int probe = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
   if (probe < 0) violation("cannot open /dev/null (descriptors exhausted?)");
   ::close(probe);
-  if (baseline < 0) baseline = probe;
-  if (probe > baseline) violation("a file descriptor leaked");
+  return probe;
+}
+
+// Runs one input through `fuzz_one` and fails when it leaked a file descriptor.
+template <typename FuzzOne>
+void withoutDescriptorLeak(FuzzOne&& fuzz_one) {
+  const int before = lowestFreeDescriptor();
+  fuzz_one();
+  if (lowestFreeDescriptor() > before) violation("a file descriptor leaked");
 }
 
 // A file under /dev/shm (memory, no disk wear) unique to this process, for APIs that only

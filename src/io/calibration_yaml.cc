@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <opencv2/core.hpp>
 #include <set>
 
@@ -27,6 +29,47 @@ std::string describeParseError(const cv::Exception& e, const std::string& path) 
                          where.substr(close + 3));
   }
   return e.err;
+}
+
+// OpenCV's YAML reader (4.6, and the same loop in its master) spins forever when a document's
+// top level ends before the file does and the next text starts with a lone '-' after three
+// skipped characters: "%YAML:1.0\n--- [1]\n--x-" (found by fuzz/fuzz_calibration). A rig
+// calibration is one document whose top level is a block mapping with its keys at column 0,
+// so anything else is refused before OpenCV sees the text. Empty when the shape is fine,
+// else "line N: problem".
+std::string documentShapeProblem(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  bool in_content = false;
+  bool seen_marker = false;
+  for (size_t line_no = 1; std::getline(in, line); ++line_no) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    for (const char c : line)
+      if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f)
+        return fmt::format("line {}: control character 0x{:02x}", line_no,
+                           static_cast<unsigned char>(c));
+    const size_t first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const bool at_key = std::isalnum(static_cast<unsigned char>(line[0])) || line[0] == '_' ||
+                        line[0] == '"' || line[0] == '\'';
+    if (!in_content) {
+      if (line[0] == '%') continue;  // directives such as %YAML:1.0
+      if (line.rfind("---", 0) == 0 && !seen_marker) {
+        const size_t rest = line.find_first_not_of(" \t", 3);
+        if (rest != std::string::npos && line[rest] != '#')
+          return fmt::format("line {}: content on the '---' line", line_no);
+        seen_marker = true;
+        continue;
+      }
+      if (!at_key)
+        return fmt::format("line {}: the top level must be 'key: value' lines at column 0",
+                           line_no);
+      in_content = true;
+    } else if (first == 0 && !at_key) {
+      return fmt::format("line {}: expected a key at column 0 (one YAML document only)", line_no);
+    }
+  }
+  return "";
 }
 
 class CalibReader {
@@ -166,6 +209,8 @@ class CalibReader {
 
   geometry::Rig read() const {
     if (!std::filesystem::is_regular_file(path_)) fail("file not found");
+    if (const std::string problem = documentShapeProblem(path_); !problem.empty())
+      fail("cannot parse YAML: " + problem);
     cv::FileStorage fs;
     try {
       if (!fs.open(path_, cv::FileStorage::READ | cv::FileStorage::FORMAT_YAML))

@@ -162,6 +162,12 @@ class CalibReader {
     if (name.empty() || !name.isString())
       fail(fmt::format("camera #{}: field 'name': missing or not a string", index));
     camera.name = static_cast<std::string>(name);
+    // OpenCV writes " front" without quotes and reads it back as "front" (found by the round
+    // trip in fuzz/fuzz_calibration); a name is also a folder name under images/.
+    if (camera.name.empty() || std::isspace(static_cast<unsigned char>(camera.name.front())) ||
+        std::isspace(static_cast<unsigned char>(camera.name.back())))
+      fail(fmt::format("camera #{}: field 'name': '{}' is empty or starts or ends with a space",
+                       index, camera.name));
     const std::string& who = camera.name;
 
     cv::FileNode model_node;

@@ -69,7 +69,8 @@ std::string frameResultToJson(const FrameResult& r) {
                      {"association", r.timings.association_ms},
                      {"solver", r.timings.solver_ms},
                      {"filter", r.timings.filter_ms},
-                     {"total", r.timings.total_ms}};
+                     {"total", r.timings.total_ms},
+                     {"cpu", r.timings.cpu_ms}};
   j["warnings"] = r.warnings;
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }

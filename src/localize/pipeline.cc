@@ -9,6 +9,8 @@
 #include <map>
 #include <set>
 
+#include <time.h>
+
 #include "common/error.h"
 #include "geometry/ground_projection.h"
 #include "localize/association_gate.h"
@@ -17,12 +19,20 @@
 #include "localize/paper_projection.h"
 #include "localize/pose_ekf.h"
 #include "localize/pose_solver.h"
+#include "localize/region_budget.h"
 #include "localize/roi_prediction.h"
 
 namespace parkloc::localize {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+// CPU time of the process, all threads, milliseconds.
+double processCpuMs() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
+
 double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
@@ -132,6 +142,12 @@ struct Pipeline::Impl {
   bool have_odometry = false;
   io::OdometrySample hold;  // latest odometry sample (zero-order hold)
   int frames_since_full_frame = 0;
+  // Region budget and full-frame round robin: frames processed, tracking frames since the
+  // track began, the camera whose turn is next, and when each landmark was last asked for.
+  int frame_index = 0;
+  int tracking_frames = 0;
+  size_t next_full_frame_camera = 0;
+  std::map<std::string, int> last_asked;
   // Re-localisation: consecutive fixes that disagree with the filter.
   int disagreeing_fixes = 0;
   bool disagreeing_with_consensus = false;  // one of them had two or more landmarks
@@ -184,6 +200,10 @@ struct Pipeline::Impl {
     have_odometry = false;
     hold = {};
     frames_since_full_frame = 0;
+    frame_index = 0;
+    tracking_frames = 0;
+    next_full_frame_camera = 0;
+    last_asked.clear();
     disagreeing_fixes = 0;
     disagreeing_with_consensus = false;
     paper_has_pose = false;
@@ -534,6 +554,7 @@ void Pipeline::Impl::measurePaper(const std::vector<LandmarkObservation>& accept
 
 FrameResult Pipeline::Impl::process(const FrameInput& frame) {
   const auto t_start = Clock::now();
+  const double cpu_start = processCpuMs();
   FrameResult result;
   result.timestamp = frame.timestamp;
 
@@ -561,25 +582,72 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
 
   // 2. Where to look: map-guided regions while tracking, the full frame now and then.
   const auto t_roi = Clock::now();
-  const bool full_frame = options.paper_mode || !options.map_guided || !is_tracking ||
-                          frames_since_full_frame + 1 >= std::max(1, options.full_frame_interval);
-  frames_since_full_frame = full_frame ? 0 : frames_since_full_frame + 1;
+  const size_t n_cameras = rig.cameras.size();
+  const int interval = std::max(1, options.full_frame_interval);
+  const bool all_full_frame =
+      options.paper_mode || !options.map_guided || !is_tracking || interval == 1 ||
+      (!options.full_frame_round_robin && frames_since_full_frame + 1 >= interval);
+  frames_since_full_frame = all_full_frame ? 0 : frames_since_full_frame + 1;
+  std::vector<bool> full_frame(n_cameras, all_full_frame);
+  bool one_full_frame = false;
+  if (!all_full_frame && options.full_frame_round_robin && n_cameras > 0) {
+    // One camera per slot, n_cameras slots spread evenly over every `interval` tracking
+    // frames: the same full-frame images as all cameras every `interval` frames, but never
+    // more than one in a frame set (the p99 latency).
+    const long t = tracking_frames;
+    const long per = static_cast<long>(n_cameras);
+    if ((t + 1) * per / interval > t * per / interval) {
+      full_frame[next_full_frame_camera % n_cameras] = true;
+      next_full_frame_camera = (next_full_frame_camera + 1) % n_cameras;
+      one_full_frame = true;
+    }
+  }
+  tracking_frames = is_tracking ? tracking_frames + 1 : 0;
   std::vector<const map::Landmark*> nearby;
-  if (!full_frame)
+  if (!all_full_frame)
     nearby = map.withinRadius(ekf.pose().translation(), options.roi_radius_m,
                               options.level.empty() ? active_level : options.level);
+  // Regions of every guided camera, then the budget over all of them.
+  std::vector<std::vector<RegionCandidate>> candidates(n_cameras);
+  if (!all_full_frame) {
+    for (size_t c = 0; c < n_cameras; ++c)
+      if (!full_frame[c])
+        candidates[c] = predictRegionCandidates(rig.cameras[c], nearby, floors, ekf.pose(),
+                                                ekf.covariance(), roi_options);
+    RegionBudgetOptions budget;
+    budget.max_regions = one_full_frame ? std::min(options.max_regions_per_frame,
+                                                   options.max_regions_with_full_frame)
+                                        : options.max_regions_per_frame;
+    if (options.max_regions_per_frame <= 0)
+      budget.max_regions = 0;
+    else if (budget.max_regions <= 0)
+      budget.max_regions = -1;  // nothing on this frame
+    budget.first_camera = frame_index % static_cast<int>(std::max<size_t>(n_cameras, 1));
+    budget.min_height_px = options.roi_min_height_px;
+    std::vector<std::vector<RegionCandidate>> kept(n_cameras);
+    if (budget.max_regions >= 0) {
+      const auto chosen = selectRegionsWithinBudget(candidates, last_asked, frame_index, budget);
+      for (size_t c = 0; c < n_cameras; ++c)
+        for (size_t i : chosen[c]) {
+          last_asked[candidates[c][i].landmark_id] = frame_index;
+          kept[c].push_back(std::move(candidates[c][i]));
+        }
+    }
+    candidates = std::move(kept);
+  }
+  ++frame_index;
   result.timings.roi_ms += msSince(t_roi);
 
   // 3. Spotting, camera by camera in rig order.
   for (const auto& input : frame.cameras)
     if (!rig.find(input.camera))
       result.warnings.push_back("camera '" + input.camera + "' is not in the rig: ignored");
-  std::vector<bool> supplied(rig.cameras.size(), false);  // instances came with the frame
-  for (size_t c = 0; c < rig.cameras.size(); ++c) {
+  std::vector<bool> supplied(n_cameras, false);  // instances came with the frame
+  for (size_t c = 0; c < n_cameras; ++c) {
     const auto& camera = rig.cameras[c];
     CameraResult camera_result;
     camera_result.camera = camera.name;
-    camera_result.full_frame = full_frame;
+    camera_result.full_frame = full_frame[c];
     const CameraInput* input = nullptr;
     for (const auto& in : frame.cameras)
       if (in.camera == camera.name) input = &in;
@@ -600,20 +668,18 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
     } else {
       ocr::SpotRequest request;
       request.camera = &camera;
-      if (!full_frame) {
-        const auto t_regions = Clock::now();
-        request.regions =
-            predictRegions(camera, nearby, floors, ekf.pose(), ekf.covariance(), roi_options);
-        for (const auto& r : request.regions)
-          request.lexicon.insert(request.lexicon.end(), r.expected_texts.begin(),
-                                 r.expected_texts.end());
+      if (!full_frame[c]) {
+        for (auto& r : candidates[c]) {
+          request.lexicon.insert(request.lexicon.end(), r.roi.expected_texts.begin(),
+                                 r.roi.expected_texts.end());
+          request.regions.push_back(std::move(r.roi));
+        }
         camera_result.regions = static_cast<int>(request.regions.size());
-        result.timings.roi_ms += msSince(t_regions);
       } else {
         request.lexicon = lexicon;
       }
       const auto t_spot = Clock::now();
-      if (full_frame || !request.regions.empty()) {
+      if (full_frame[c] || !request.regions.empty()) {
         try {
           camera_result.instances = spotter->spot(input->image, request);
         } catch (const InputError& e) {
@@ -732,6 +798,7 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
     measureParkloc(inside, outside, result);
 
   result.timings.total_ms = msSince(t_start);
+  result.timings.cpu_ms = processCpuMs() - cpu_start;
   return result;
 }
 

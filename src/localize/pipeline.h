@@ -123,6 +123,21 @@ struct PipelineOptions {
   double roi_margin_px = 12.0;   // grown by the pose uncertainty, plus this margin
   double roi_min_size_px = 8.0;  // projected text smaller than this is skipped
 
+  // Real-time budget for map-guided spotting (added later; additive). Each region costs
+  // the OCR engine ~18 ms of CPU and a tracked frame set predicts dozens; the EKF carries
+  // the pose between measurements, so only the regions that help most are asked for (see
+  // region_budget.h). <= 0: every predicted region (the first version).
+  int max_regions_per_frame = 3;
+  // On a frame set where one camera is spotted on the full frame (~100 ms), fewer regions
+  // on the others keep the frame within the p99 target.
+  int max_regions_with_full_frame = 1;
+  double roi_min_height_px = 6.0;  // predicted text flatter than this (grazing) is skipped
+  // While tracking, spread full-frame spotting: one camera at a time in turn, as many
+  // camera images per full_frame_interval frames as before (one per camera), but never
+  // all four in the same frame set. False: all cameras every full_frame_interval frames.
+  // When lost or not initialised, every camera is spotted on the full frame either way.
+  bool full_frame_round_robin = true;
+
   // Optional known starting pose (e.g. from a previous session); otherwise the first
   // solver fix initialises.
   std::optional<geometry::Pose2> initial_pose;
@@ -209,6 +224,10 @@ struct StageTimings {
   double solver_ms = 0.0;       // SE(2) solve or paper projection + averaging
   double filter_ms = 0.0;       // EKF predict + update
   double total_ms = 0.0;
+  // CPU time of the whole process during process(), all threads (OCR engine threads
+  // included), milliseconds: unlike wall time it does not grow with the machine's load
+  // (added later; additive).
+  double cpu_ms = 0.0;
 };
 
 struct FrameResult {

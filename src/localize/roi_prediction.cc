@@ -40,6 +40,16 @@ std::vector<ocr::RegionOfInterest> predictRegions(const geometry::RigCamera& cam
                                                   const Eigen::Matrix3d& covariance,
                                                   const RoiOptions& options) {
   std::vector<ocr::RegionOfInterest> regions;
+  for (auto& candidate : predictRegionCandidates(camera, nearby, floors, pose, covariance, options))
+    regions.push_back(std::move(candidate.roi));
+  return regions;
+}
+
+std::vector<RegionCandidate> predictRegionCandidates(
+    const geometry::RigCamera& camera, const std::vector<const map::Landmark*>& nearby,
+    const FloorHeights& floors, const geometry::Pose2& pose, const Eigen::Matrix3d& covariance,
+    const RoiOptions& options) {
+  std::vector<RegionCandidate> regions;
   for (const map::Landmark* landmark : nearby) {
     const auto corners = floors.cornersAboveFloor(*landmark);
     std::array<Eigen::Vector2d, 4> quad;
@@ -69,13 +79,17 @@ std::vector<ocr::RegionOfInterest> predictRegions(const geometry::RigCamera& cam
     const double grow = options.margin_px + options.sigma_scale * grow_sigma;
     if (grow > options.max_grow_px) continue;
 
-    ocr::RegionOfInterest roi;
+    RegionCandidate candidate;
     const auto grown = readingAlignedBox(quad, grow);
     for (int i = 0; i < 4; ++i)
-      roi.polygon[i] =
+      candidate.roi.polygon[i] =
           cv::Point2f(static_cast<float>(grown[i].x()), static_cast<float>(grown[i].y()));
-    roi.expected_texts.push_back(landmark->text);
-    regions.push_back(std::move(roi));
+    candidate.roi.expected_texts.push_back(landmark->text);
+    candidate.landmark_id = landmark->id;
+    candidate.size_px = longest;
+    const auto tight = readingAlignedBox(quad, 0.0);
+    candidate.height_px = (tight[0] - tight[3]).norm();
+    regions.push_back(std::move(candidate));
   }
   return regions;
 }

@@ -8,6 +8,7 @@
 #include "geometry/pose.h"
 #include "geometry/rig.h"
 #include "localize/floor_heights.h"
+#include "localize/region_budget.h"
 #include "map/landmark.h"
 #include "ocr/text_spotter.h"
 
@@ -28,6 +29,13 @@ std::vector<ocr::RegionOfInterest> predictRegions(const geometry::RigCamera& cam
                                                   const geometry::Pose2& pose,
                                                   const Eigen::Matrix3d& covariance,
                                                   const RoiOptions& options = {});
+
+// The same regions with the landmark id and the predicted text's size, for the per-frame
+// region budget (added later; additive).
+std::vector<RegionCandidate> predictRegionCandidates(
+    const geometry::RigCamera& camera, const std::vector<const map::Landmark*>& nearby,
+    const FloorHeights& floors, const geometry::Pose2& pose, const Eigen::Matrix3d& covariance,
+    const RoiOptions& options = {});
 
 // The rectangle aligned with a text quad's reading direction that holds the quad, grown
 // by `margin` pixels on every side; corners in reading order (top-left first). Robust to

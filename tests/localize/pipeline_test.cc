@@ -310,6 +310,8 @@ TEST_F(PipelineTest, MapGuidedSpottingAsksForPredictedRegionsAndFullFramesNowAnd
   SceneSpotter spotter(rig, map);
   PipelineOptions options;
   options.full_frame_interval = 5;
+  options.max_regions_per_frame = 0;       // every predicted region (no budget)
+  options.full_frame_round_robin = false;  // all cameras on the same frame
   Pipeline pipeline(rig, map, options, &spotter);
   Drive drive;
   int guided_frames = 0, full_frames = 0;

@@ -235,6 +235,7 @@ OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSp
         if (!labels) continue;  // no ground truth: nothing to score
         const cv::Mat image = seq.loadImage(i, camera);
         if (image.empty()) continue;
+        request.camera = seq.rig().find(camera);  // the floor view needs the camera
         const auto start = Clock::now();
         const std::vector<ocr::TextInstance> found = spotter.spot(image, request);
         evaluator.add(*labels, found, conditions, msSince(start) / 1000.0);
@@ -326,6 +327,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         if (c.labels) addRotationTags(*c.labels, options.ocr_metrics.dont_care_occlusion, tags);
         if (spotter) c.image = seq.loadImage(i, camera);
         if (shared_ocr && !c.image.empty()) {
+          full_frame.camera = seq.rig().find(camera);  // the floor view needs the camera
           const auto start = Clock::now();
           c.full_frame = spotter->spot(c.image, full_frame);
           const double ms = msSince(start);

@@ -22,6 +22,7 @@ struct RunArgs {
   int full_frame_interval = 10;
   size_t max_frames = 0;
   bool quiet = false;
+  std::vector<std::string> inject;
   parkloc::app::SpotterArgs spotter;
 };
 
@@ -42,6 +43,10 @@ void run(const RunArgs& a) {
   options.max_frames = a.max_frames;
   options.out_dir = a.out;
   options.video_path = a.video;
+  if (!a.inject.empty()) {
+    options.faults = localize::parseFaults(a.inject);
+    std::cerr << "parkloc: injecting faults:\n" << localize::describeFaults(options.faults) << "\n";
+  }
   if (!a.paper && !a.no_odometry && sequence.odometry().empty())
     std::cerr << "parkloc: warning: no odometry: the filter predicts a random walk\n";
 
@@ -69,6 +74,9 @@ void run(const RunArgs& a) {
         s.frames_over_half_metre, s.mean_yaw_error_deg);
   std::cout << fmt::format("latency per frame set median {:.2f} ms  p99 {:.2f} ms\n",
                            s.latency_median_ms, s.latency_p99_ms);
+  if (s.frames_skipped_by_faults)
+    std::cout << fmt::format("{} frame sets skipped by fault injection\n",
+                             s.frames_skipped_by_faults);
   if (s.frames_with_warnings)
     std::cout << fmt::format("{} frames with warnings (see frames.jsonl)\n",
                              s.frames_with_warnings);
@@ -101,6 +109,9 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
       ->capture_default_str();
   cmd->add_option("--max-frames", args->max_frames, "Process at most N frame sets (0: all)");
   cmd->add_flag("--quiet", args->quiet, "No progress line");
+  cmd->add_option("--inject", args->inject,
+                  "Inject faults, e.g. dark:front:3-8,drop:0.1 (see localize/fault_injection.h)")
+      ->allow_extra_args(false);
   args->spotter.addTo(cmd);
   cmd->callback([args] { run(*args); });
 });

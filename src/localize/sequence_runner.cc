@@ -67,7 +67,11 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
   std::ofstream frames_log(frames_path);
   if (!frames_log) throw IoError(fmt::format("run: cannot write {}", frames_path));
 
-  Pipeline pipeline(sequence.rig(), sequence.map(), options.pipeline, spotter);
+  checkFaultCameras(options.faults, sequence.rig());
+  FaultInjector injector(options.faults, sequence.timestamps(), sequence.groundTruth(),
+                         sequence.odometry());
+  Pipeline pipeline(sequence.rig(), sequence.map(), options.pipeline,
+                    injector.wrapSpotter(spotter));
   const auto& timestamps = sequence.timestamps();
   size_t count = timestamps.size();
   if (options.max_frames > 0) count = std::min(count, options.max_frames);
@@ -97,6 +101,11 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
   double previous_time = -std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < count; ++i) {
     const double t = timestamps[i];
+    if (injector.skip(i)) {  // kidnapped: never seen, its odometry withheld
+      previous_time = t;
+      ++summary.frames_skipped_by_faults;
+      continue;
+    }
     FrameInput input;
     input.timestamp = t;
     input.odometry = odometryBetween(sequence.odometry(), previous_time, t);
@@ -121,8 +130,10 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
       }
       if (!c.image.empty() || c.instances) input.cameras.push_back(std::move(c));
     }
+    injector.apply(i, input, load_warnings);
     FrameResult result = pipeline.process(input);
     result.warnings.insert(result.warnings.begin(), load_warnings.begin(), load_warnings.end());
+    for (auto& note : injector.takeSpotterNotes()) result.warnings.push_back(std::move(note));
     frames_log << frameResultToJson(result) << '\n';
 
     ++summary.frames;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/sequence.h"
+#include "localize/fault_injection.h"
 #include "localize/pipeline.h"
 #include "ocr/text_spotter.h"
 
@@ -20,6 +21,7 @@ struct RunOptions {
   std::string out_dir;     // receives trajectory.tum and frames.jsonl (created)
   std::string video_path;  // annotated mp4; empty: none
   std::function<void(size_t done, size_t total)> progress;
+  InputFaults faults;  // injected sensor faults (`parkloc run --inject`); none by default
 };
 
 struct RunSummary {
@@ -30,6 +32,7 @@ struct RunSummary {
   size_t poses_after_first_fix = 0;
   std::map<std::string, size_t> status_counts;
   size_t frames_with_warnings = 0;
+  size_t frames_skipped_by_faults = 0;         // kidnap: frame sets never processed
   std::vector<std::string> sequence_warnings;  // from reading the folder
 
   // Against poses.tum, over the frames with a pose (empty without ground truth).

@@ -28,6 +28,8 @@ void read(const YAML::Node& node, const char* key, T& value, const std::string& 
 }
 
 DriveSpec parseDrive(const YAML::Node& node, const std::string& where) {
+  // yaml-cpp throws its own exceptions when a scalar is indexed like a mapping.
+  if (!node.IsMap()) throw InputError(where + ": expected a mapping");
   DriveSpec d;
   read(node, "route", d.route, where);
   read(node, "condition", d.condition, where);
@@ -45,6 +47,7 @@ DriveSpec parseDrive(const YAML::Node& node, const std::string& where) {
 
 GarageSpec parseGarage(const YAML::Node& node, const GarageSpec& defaults,
                        const std::string& where) {
+  if (!node.IsMap()) throw InputError(where + ": expected a mapping");
   GarageSpec g = defaults;
   read(node, "name", g.name, where);
   read(node, "split", g.split, where);
@@ -69,6 +72,7 @@ GarageSpec parseGarage(const YAML::Node& node, const GarageSpec& defaults,
     g.numbering = numberingSchemeFromString(scheme);
   }
   if (const YAML::Node drives = node["drives"]) {
+    if (!drives.IsSequence()) throw InputError(where + ": field 'drives' must be a list");
     g.drives.clear();
     for (size_t i = 0; i < drives.size(); ++i)
       g.drives.push_back(parseDrive(drives[i], where + " drive " + std::to_string(i)));

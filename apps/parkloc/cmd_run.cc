@@ -6,6 +6,7 @@
 
 #include "apps/parkloc/command.h"
 #include "apps/parkloc/eval_common.h"
+#include "eval/dataset.h"
 #include "io/sequence.h"
 #include "localize/sequence_runner.h"
 
@@ -16,6 +17,7 @@ struct RunArgs {
   std::string out;
   std::string calib, map, odometry;
   std::string video;
+  std::string level;
   bool oracle = false, paper = false;
   bool no_afm = false, no_mcrp = false, no_mcap = false, no_odometry = false;
   bool no_map_guided = false;
@@ -39,6 +41,9 @@ void run(const RunArgs& a) {
   if (a.no_odometry) options.pipeline.use_odometry = false;
   if (a.no_map_guided) options.pipeline.map_guided = false;
   if (!a.paper) options.pipeline.full_frame_interval = a.full_frame_interval;
+  // Parking numbers repeat on every level of a garage: the drive's level comes from
+  // --level, else from the sequence's meta.json, else the pipeline votes.
+  options.pipeline.level = a.level.empty() ? eval::sequenceLevel(sequence.metaJson()) : a.level;
   options.oracle = a.oracle;
   options.max_frames = a.max_frames;
   options.out_dir = a.out;
@@ -95,6 +100,8 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--odometry", args->odometry,
                   "Wheel odometry CSV (default SEQUENCE/odometry.csv)");
   cmd->add_option("--video", args->video, "Write an annotated mp4 here");
+  cmd->add_option("--level", args->level,
+                  "Garage level of the drive (default: meta.json \"level\", else voted)");
   cmd->add_flag("--oracle", args->oracle, "Text from the ground-truth labels (oracle OCR)");
   cmd->add_flag("--paper", args->paper,
                 "The paper's pipeline: text centre + homography, AFM, MCRP, MCAP, no odometry");

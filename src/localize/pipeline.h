@@ -127,7 +127,11 @@ struct PipelineOptions {
   // the OCR engine ~18 ms of CPU and a tracked frame set predicts dozens; the EKF carries
   // the pose between measurements, so only the regions that help most are asked for (see
   // region_budget.h). <= 0: every predicted region (the first version).
-  int max_regions_per_frame = 3;
+  // Off by default: with a budget of 3 and round-robin full frames, the 300-frame demo
+  // drive drifted to 23.9 cm mean / 106 cm max error (fixes too sparse through a turn),
+  // where the unbudgeted pipeline had measured 2.1 cm mean on a 150-frame drive. The
+  // budget needs tuning against accuracy before it can be the default (docs/LOCALIZATION.md).
+  int max_regions_per_frame = 0;
   // On a frame set where one camera is spotted on the full frame (~100 ms), fewer regions
   // on the others keep the frame within the p99 target.
   int max_regions_with_full_frame = 1;
@@ -136,7 +140,7 @@ struct PipelineOptions {
   // camera images per full_frame_interval frames as before (one per camera), but never
   // all four in the same frame set. False: all cameras every full_frame_interval frames.
   // When lost or not initialised, every camera is spotted on the full frame either way.
-  bool full_frame_round_robin = true;
+  bool full_frame_round_robin = false;
 
   // Optional known starting pose (e.g. from a previous session); otherwise the first
   // solver fix initialises.

@@ -129,6 +129,7 @@ TEST(RegionBudget, PipelineKeepsTheBudgetSpreadsFullFramesAndRotatesCameras) {
   PipelineOptions options;
   options.max_regions_per_frame = 2;
   options.max_regions_with_full_frame = 1;
+  options.full_frame_round_robin = true;
   options.full_frame_interval = 8;
   Pipeline pipeline(rig, map, options, &spotter);
   std::set<std::string> cameras_with_regions, cameras_on_full_frame;

@@ -46,33 +46,29 @@ NormalEquations accumulate(const geometry::Rig& rig, const std::vector<LandmarkO
                            const std::vector<bool>& use, const geometry::Pose2& pose,
                            double huber) {
   NormalEquations n;
+  // One Huber-weighted (IRLS) residual, for a corner or a centre alike.
+  const auto add = [&](const Eigen::Vector2d& r, const Eigen::Matrix<double, 2, 3>& J) {
+    const double e = r.norm();
+    const double w = e <= huber ? 1.0 : huber / e;
+    n.H += w * J.transpose() * J;
+    n.g += w * J.transpose() * r;
+    n.cost += huberCost(e, huber);
+    n.squared_error += e * e;
+    ++n.corners;
+  };
   for (size_t o = 0; o < obs.size(); ++o) {
     if (!use[o]) continue;
     const auto& camera = rig.cameras[obs[o].camera];
     if (!obs[o].use_corners) {
       const auto c = projectCentre(camera, pose, obs[o]);
       if (!c) continue;
-      const Eigen::Vector2d r = c->pixel - observedCentre(obs[o]);
-      const double e = r.norm();
-      const double w = e <= huber ? 1.0 : huber / e;
-      n.H += w * c->J_pixel_pose.transpose() * c->J_pixel_pose;
-      n.g += w * c->J_pixel_pose.transpose() * r;
-      n.cost += huberCost(e, huber);
-      n.squared_error += e * e;
-      ++n.corners;
+      add(c->pixel - observedCentre(obs[o]), c->J_pixel_pose);
       continue;
     }
     for (int i = 0; i < 4; ++i) {
       const auto p = projectMapCorner(camera, pose, obs[o].map_corners[i]);
       if (!p) continue;
-      const Eigen::Vector2d r = p->pixel - obs[o].pixels[i];
-      const double e = r.norm();
-      const double w = e <= huber ? 1.0 : huber / e;
-      n.H += w * p->J_pixel_pose.transpose() * p->J_pixel_pose;
-      n.g += w * p->J_pixel_pose.transpose() * r;
-      n.cost += huberCost(e, huber);
-      n.squared_error += e * e;
-      ++n.corners;
+      add(p->pixel - obs[o].pixels[i], p->J_pixel_pose);
     }
   }
   return n;

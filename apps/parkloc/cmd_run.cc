@@ -22,6 +22,8 @@ struct RunArgs {
   bool no_afm = false, no_mcrp = false, no_mcap = false, no_odometry = false;
   bool no_map_guided = false;
   int full_frame_interval = 10;
+  int reread_interval = parkloc::localize::PipelineOptions{}.reread_interval_frames;
+  int max_reads = parkloc::localize::PipelineOptions{}.max_reads_per_frame;
   size_t max_frames = 0;
   bool quiet = false;
   std::vector<std::string> inject;
@@ -40,7 +42,11 @@ void run(const RunArgs& a) {
   options.pipeline.mcap = !a.no_mcap;
   if (a.no_odometry) options.pipeline.use_odometry = false;
   if (a.no_map_guided) options.pipeline.map_guided = false;
-  if (!a.paper) options.pipeline.full_frame_interval = a.full_frame_interval;
+  if (!a.paper) {
+    options.pipeline.full_frame_interval = a.full_frame_interval;
+    options.pipeline.reread_interval_frames = a.reread_interval;
+    options.pipeline.max_reads_per_frame = a.max_reads;
+  }
   // Parking numbers repeat on every level of a garage: the drive's level comes from
   // --level, else from the sequence's meta.json, else the pipeline votes.
   options.pipeline.level = a.level.empty() ? eval::sequenceLevel(sequence.metaJson()) : a.level;
@@ -113,6 +119,15 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--full-frame-interval", args->full_frame_interval,
                   "Full-frame spotting every N frames while tracking")
       ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--reread-interval", args->reread_interval,
+                  "Track texts read in the last N frames by fitting their ink, without reading "
+                  "(0: read every region every frame)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--max-reads", args->max_reads,
+                  "Regions read per frame set while tracking (0: no limit)")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--max-frames", args->max_frames, "Process at most N frame sets (0: all)");
   cmd->add_flag("--quiet", args->quiet, "No progress line");

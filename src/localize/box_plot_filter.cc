@@ -63,6 +63,11 @@ void BoxPlotFilter::clear() {
   consecutive_rejections_ = 0;
 }
 
+void BoxPlotFilter::remember(double number) {
+  push(number);
+  consecutive_rejections_ = 0;
+}
+
 void BoxPlotFilter::push(double number) {
   queue_.push_back(number);
   while (queue_.size() > std::max<size_t>(options_.queue_length, 1)) queue_.pop_front();

@@ -44,6 +44,9 @@ class BoxPlotFilter {
 
   // Algorithm 1 for one number: true = kept (and pushed into the queue).
   bool accept(double number);
+  // Pushes a number vouched for by other means (a landmark accepted by the pose gate while
+  // tracking), so that the queue follows the numbers around the vehicle.
+  void remember(double number);
   // The range a number must fall into; empty while the queue is not full.
   std::optional<std::pair<double, double>> range() const;
 

@@ -253,7 +253,9 @@ std::vector<std::string> spoofInstances(const std::vector<SpoofedSign>& spoofs,
   std::vector<std::string> notes;
   for (auto& instance : instances)
     for (const auto& s : spoofs)
-      if (instance.text == s.real) {
+      // A tracked text is not read, only fitted where REAL stands: the sign's content
+      // cannot fool it (its place is REAL's place).
+      if (instance.read && instance.text == s.real) {
         instance.text = s.fake;
         instance.raw_text = s.fake;
         notes.push_back(fmt::format("fault: spoofed sign: '{}' reads '{}'", s.real, s.fake));

@@ -43,7 +43,8 @@ std::string frameResultToJson(const FrameResult& r) {
                            {"polygon", polygon},
                            {"detection_score", t.detection_score},
                            {"recognition_score", t.recognition_score},
-                           {"class_score", t.class_score}});
+                           {"class_score", t.class_score},
+                           {"read", t.read}});
     }
     cameras.push_back({{"camera", c.camera},
                        {"image_ok", c.image_ok},

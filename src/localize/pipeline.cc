@@ -148,6 +148,9 @@ struct Pipeline::Impl {
   int tracking_frames = 0;
   size_t next_full_frame_camera = 0;
   std::map<std::string, int> last_asked;
+  // Tracking: the frame index at which each landmark was last read and accepted.
+  std::map<std::string, int> last_read;
+  std::map<std::string, int> last_read_attempt;
   // Re-localisation: consecutive fixes that disagree with the filter.
   int disagreeing_fixes = 0;
   bool disagreeing_with_consensus = false;  // one of them had two or more landmarks
@@ -204,6 +207,8 @@ struct Pipeline::Impl {
     tracking_frames = 0;
     next_full_frame_camera = 0;
     last_asked.clear();
+    last_read.clear();
+    last_read_attempt.clear();
     disagreeing_fixes = 0;
     disagreeing_with_consensus = false;
     paper_has_pose = false;
@@ -299,6 +304,50 @@ struct Pipeline::Impl {
       // Integrate up to the frame without consuming the sample.
       paper_yaw += hold.yaw_rate * (frame.timestamp - hold.timestamp);
       hold.timestamp = frame.timestamp;
+    }
+  }
+
+  // Tracking: texts read lately are only fitted; of the others, the largest are read,
+  // at most max_reads_per_frame over all cameras; the rest wait for a later frame.
+  void chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& candidates) {
+    struct Unread {
+      size_t camera, index;
+      double size;
+    };
+    std::vector<Unread> unread;
+    std::vector<std::vector<bool>> keep(candidates.size());
+    for (size_t c = 0; c < candidates.size(); ++c) {
+      keep[c].assign(candidates[c].size(), false);
+      for (size_t i = 0; i < candidates[c].size(); ++i) {
+        RegionCandidate& r = candidates[c][i];
+        const auto read = last_read.find(r.landmark_id);
+        if (read != last_read.end() &&
+            frame_index - read->second < options.reread_interval_frames) {
+          r.roi.read = false;
+          keep[c][i] = r.height_px >= options.tracked_min_height_px;
+        } else {
+          // A region tried lately and not read (occluded, blurred) waits a while.
+          const auto tried = last_read_attempt.find(r.landmark_id);
+          const bool tried_lately = tried != last_read_attempt.end() &&
+                                    frame_index - tried->second < options.reread_interval_frames;
+          if (!tried_lately) unread.push_back({c, i, r.size_px});
+        }
+      }
+    }
+    std::stable_sort(unread.begin(), unread.end(),
+                     [](const Unread& a, const Unread& b) { return a.size > b.size; });
+    const size_t reads = options.max_reads_per_frame > 0
+                             ? std::min(unread.size(), size_t(options.max_reads_per_frame))
+                             : unread.size();
+    for (size_t k = 0; k < reads; ++k) {
+      keep[unread[k].camera][unread[k].index] = true;
+      last_read_attempt[candidates[unread[k].camera][unread[k].index].landmark_id] = frame_index;
+    }
+    for (size_t c = 0; c < candidates.size(); ++c) {
+      std::vector<RegionCandidate> kept;
+      for (size_t i = 0; i < candidates[c].size(); ++i)
+        if (keep[c][i]) kept.push_back(std::move(candidates[c][i]));
+      candidates[c] = std::move(kept);
     }
   }
 
@@ -634,6 +683,7 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
         }
     }
     candidates = std::move(kept);
+    if (options.reread_interval_frames > 0) chooseReadsAndFits(candidates);
   }
   ++frame_index;
   result.timings.roi_ms += msSince(t_roi);
@@ -700,6 +750,12 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
     voteLevel(result.cameras);
   const std::string& level = options.level.empty() ? active_level : options.level;
   std::vector<LandmarkObservation> inside, outside;
+  // The box plot (paper 3.3) assumes the numbers in view change slowly; after a turn into
+  // another aisle they jump and it rejects the new ones for a while. While parkloc
+  // tracks, the pose gate tests every reading against where its landmark must be, so the
+  // box plot filters only before the first fix (and in the paper's pipeline); the gated
+  // numbers keep its queue current for when the track is lost.
+  const bool afm_filters_readings = options.afm && (options.paper_mode || !is_tracking);
   for (size_t c = 0; c < result.cameras.size(); ++c) {
     const auto& instances = result.cameras[c].instances;
     const bool use_corners =
@@ -721,8 +777,8 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
       } else if (instance.recognition_score < options.min_recognition_score) {
         a.verdict = AssociationVerdict::kLowScore;
       } else if (const auto number = parkingNumberValue(instance.text);
-                 options.afm && instance.cls == map::TextClass::kParkingNumber && number &&
-                 !afm.accept(*number)) {
+                 afm_filters_readings && instance.read &&
+                 instance.cls == map::TextClass::kParkingNumber && number && !afm.accept(*number)) {
         a.verdict = AssociationVerdict::kAnomaly;
       } else {
         const auto candidates = map.findByText(instance.text, level);
@@ -783,6 +839,18 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
           if (a.verdict == AssociationVerdict::kGated && candidates.size() == 1)
             outside.push_back(o);
         }
+      }
+      // A text read and accepted needs no reading for a while; a fitted one that does
+      // not fit the prediction is read again.
+      if (!a.landmark_id.empty()) {
+        const auto number = parkingNumberValue(instance.text);
+        if (a.verdict == AssociationVerdict::kAccepted && options.afm && !afm_filters_readings &&
+            instance.cls == map::TextClass::kParkingNumber && number)
+          afm.remember(*number);
+        if (a.verdict == AssociationVerdict::kAccepted && instance.read)
+          last_read[a.landmark_id] = frame_index - 1;
+        else if (a.verdict != AssociationVerdict::kAccepted && !instance.read)
+          last_read.erase(a.landmark_id);
       }
       result.associations.push_back(std::move(a));
     }

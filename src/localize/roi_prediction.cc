@@ -85,6 +85,10 @@ std::vector<RegionCandidate> predictRegionCandidates(
       candidate.roi.polygon[i] =
           cv::Point2f(static_cast<float>(grown[i].x()), static_cast<float>(grown[i].y()));
     candidate.roi.expected_texts.push_back(landmark->text);
+    candidate.roi.expected_class = landmark->cls;
+    for (int i = 0; i < 4; ++i)
+      candidate.roi.predicted[i] =
+          cv::Point2f(static_cast<float>(quad[i].x()), static_cast<float>(quad[i].y()));
     candidate.landmark_id = landmark->id;
     candidate.size_px = longest;
     const auto tight = readingAlignedBox(quad, 0.0);

@@ -23,6 +23,10 @@ struct TextInstance {
   float detection_score = 0.f;
   float recognition_score = 0.f;  // calibrated probability of `text`
   float class_score = 0.f;
+  // False when the corners were fitted where the map predicts an identified text, without
+  // reading it (RegionOfInterest::read == false): `text` is then the expected text and the
+  // scores are 0.
+  bool read = true;
 };
 
 // A region where the map predicts text (map-guided spotting): the predicted polygon in
@@ -30,6 +34,13 @@ struct TextInstance {
 struct RegionOfInterest {
   std::array<cv::Point2f, 4> polygon;
   std::vector<std::string> expected_texts;
+  // Tracking (added later): false when the text was read in recent frames, so that only its
+  // corners are fitted to the ink around `predicted` (the text's own projected polygon,
+  // reading order), with no detection or recognition; the instance then carries
+  // expected_texts.front() and `expected_class`.
+  bool read = true;
+  std::array<cv::Point2f, 4> predicted{};
+  map::TextClass expected_class = map::TextClass::kOther;
 };
 
 struct SpotRequest {

@@ -279,6 +279,33 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
 
 std::vector<TextInstance> PpOcrSpotter::spotRegions(const cv::Mat& image,
                                                     const SpotRequest& request) {
+  // Identified texts are only fitted; the others are detected and read.
+  std::vector<TextInstance> out;
+  SpotRequest to_read = request;
+  to_read.regions.clear();
+  for (const RegionOfInterest& region : request.regions) {
+    if (region.read) {
+      to_read.regions.push_back(region);
+      continue;
+    }
+    if (region.expected_texts.empty()) continue;
+    const auto fitted =
+        fitTrackedText(image, region.predicted, request.camera, options_.tracked_fit);
+    if (!fitted) continue;
+    TextInstance inst;
+    inst.polygon = *fitted;
+    inst.text = region.expected_texts.front();
+    inst.cls = region.expected_class;
+    inst.read = false;
+    out.push_back(std::move(inst));
+  }
+  if (to_read.regions.empty()) return out;
+  for (TextInstance& inst : readRegions(image, to_read)) out.push_back(std::move(inst));
+  return out;
+}
+
+std::vector<TextInstance> PpOcrSpotter::readRegions(const cv::Mat& image,
+                                                    const SpotRequest& request) {
   const cv::Size patch = options_.region_patch;
   const float aspect = float(patch.width) / patch.height;
   std::vector<cv::Mat> patches;

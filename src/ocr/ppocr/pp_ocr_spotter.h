@@ -13,6 +13,7 @@
 #include "ocr/onnx_model.h"
 #include "ocr/text_classifier.h"
 #include "ocr/text_spotter.h"
+#include "ocr/tracked_text_fit.h"
 
 namespace parkloc::ocr {
 
@@ -62,6 +63,8 @@ struct PpOcrOptions {
   float region_expand_x = 1.4f;
   float region_expand_y = 2.2f;
   cv::Size region_patch{256, 64};
+  // Regions with RegionOfInterest::read == false: corner fit only.
+  TrackedFitOptions tracked_fit;
 };
 
 class PpOcrSpotter : public TextSpotter {
@@ -79,6 +82,7 @@ class PpOcrSpotter : public TextSpotter {
   struct Networks;
   std::vector<TextInstance> spotFullFrame(const cv::Mat& image, const SpotRequest& request);
   std::vector<TextInstance> spotRegions(const cv::Mat& image, const SpotRequest& request);
+  std::vector<TextInstance> readRegions(const cv::Mat& image, const SpotRequest& request);
 
   std::vector<TextInstance> detectAndRead(const cv::Mat& image, const SpotRequest& request,
                                           const geometry::RigCamera* camera);

@@ -727,6 +727,11 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
         camera_result.regions = static_cast<int>(request.regions.size());
       } else {
         request.lexicon = lexicon;
+        // While tracking, the full frame is a sweep for what the prediction missed.
+        if (is_tracking && options.reread_interval_frames > 0) {
+          request.max_reads = std::max(0, options.max_reads_per_frame);
+          request.detection_scale = static_cast<float>(options.sweep_detection_scale);
+        }
       }
       const auto t_spot = Clock::now();
       if (full_frame[c] || !request.regions.empty()) {

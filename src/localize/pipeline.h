@@ -150,8 +150,11 @@ struct PipelineOptions {
   // 0: every region is read every frame (the first version: 9.5 cm mean and 560 ms median
   // on the 300-frame demo drive, against 2.8 cm and 54 ms with 10 / 2; docs/RESULTS.md).
   int reread_interval_frames = 10;
-  int max_reads_per_frame = 2;  // <= 0: no limit
+  int max_reads_per_frame = 2;         // <= 0: no limit
   double tracked_min_height_px = 8.0;  // flatter predicted text is not fitted
+  // While tracking, the full-frame sweep's detector input is scaled by this (faster; it
+  // only has to catch what the prediction missed).
+  double sweep_detection_scale = 1.0;
 
   // Optional known starting pose (e.g. from a previous session); otherwise the first
   // solver fix initialises.

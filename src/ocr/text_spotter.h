@@ -51,6 +51,13 @@ struct SpotRequest {
   // The camera that took the image, when known (not owned): engines may use its
   // calibration, e.g. to fit floor text corners on the ground plane.
   const geometry::RigCamera* camera = nullptr;
+  // Full frame: read at most this many detected boxes, the largest first (0: all). A
+  // tracking vehicle sweeps the full frame only to catch what the map prediction missed,
+  // within its real-time budget (added later).
+  int max_reads = 0;
+  // Full frame: the detector's input is scaled by this (< 1: coarser and faster, for such a
+  // sweep; large text only).
+  float detection_scale = 1.f;
 };
 
 class TextSpotter {

@@ -200,7 +200,8 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                                                       const SpotRequest& request,
                                                       const geometry::RigCamera* camera) {
   const double scale =
-      std::min(1.0, options_.detection_max_side / double(std::max(image.cols, image.rows)));
+      std::min(1.0, options_.detection_max_side / double(std::max(image.cols, image.rows))) *
+      std::clamp(static_cast<double>(request.detection_scale), 0.1, 1.0);
   const int w = roundTo32(image.cols * scale), h = roundTo32(image.rows * scale);
   cv::Mat resized;
   if (w == image.cols && h == image.rows)
@@ -218,6 +219,12 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     job.detection_score = box.score;
     job.lexicon = &request.lexicon;
     jobs.push_back(job);
+  }
+  if (request.max_reads > 0 && jobs.size() > static_cast<size_t>(request.max_reads)) {
+    auto area = [](const ReadJob& j) { return quadWidth(j.quad) * quadHeight(j.quad); };
+    std::stable_sort(jobs.begin(), jobs.end(),
+                     [&](const ReadJob& a, const ReadJob& b) { return area(a) > area(b); });
+    jobs.resize(static_cast<size_t>(request.max_reads));
   }
   auto read = readJobs(image, jobs, camera, options_, nets_->detector, nets_->recognizer,
                        nets_->direction ? &*nets_->direction : nullptr, nets_->charset);

@@ -1,0 +1,111 @@
+// Tracking identified texts (PipelineOptions::reread_interval_frames): texts read lately
+// are only fitted, a few unread ones are read per frame set, and the pose stays exact.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+#include "localize/pipeline.h"
+#include "synthetic_scene.h"
+
+namespace parkloc::localize {
+namespace {
+
+// Shows exactly what the synthetic scene holds inside the requested regions; a fitted
+// region gives its text unread, as the OCR engine does. Notes what was asked for.
+class RecordingSpotter : public ocr::TextSpotter {
+ public:
+  explicit RecordingSpotter(const map::HdMap& map) : map_(map) {}
+  std::string name() const override { return "recording"; }
+  std::vector<ocr::TextInstance> spot(const cv::Mat&, const ocr::SpotRequest& request) override {
+    auto all = testing::spotExactly(*request.camera, map_, pose, {});
+    if (request.regions.empty()) {
+      for (const auto& t : all) read_now.insert(t.text);
+      return all;
+    }
+    std::vector<ocr::TextInstance> out;
+    for (const auto& r : request.regions) {
+      (r.read ? read_now : fitted_now).insert(r.expected_texts.front());
+      reads_asked += r.read ? 1 : 0;
+      for (auto t : all)
+        if (r.expected_texts.front() == t.text) {
+          t.read = r.read;
+          out.push_back(t);
+        }
+    }
+    return out;
+  }
+  geometry::Pose2 pose;
+  std::set<std::string> read_now, fitted_now;
+  int reads_asked = 0;
+
+ private:
+  const map::HdMap& map_;
+};
+
+TEST(TrackedReading, ReadsAFewTextsPerFrameFitsTheRestAndKeepsThePose) {
+  const geometry::Rig rig = geometry::defaultRig();
+  const map::HdMap map = testing::aisleMap();
+  RecordingSpotter spotter(map);
+  PipelineOptions options;
+  options.reread_interval_frames = 10;
+  options.max_reads_per_frame = 2;
+  options.full_frame_interval = 1000;  // only the first frame on the full frame
+  Pipeline pipeline(rig, map, options, &spotter);
+  std::map<std::string, int> last_read;
+  int fitted_total = 0;
+  for (int k = 0; k < 40; ++k) {
+    const double t = k / 10.0;
+    spotter.pose = geometry::Pose2(1.5 * t, 0.1, 0.0);
+    spotter.read_now.clear();
+    spotter.fitted_now.clear();
+    spotter.reads_asked = 0;
+    FrameInput in;
+    in.timestamp = t;
+    for (const auto& camera : rig.cameras)
+      in.cameras.push_back({camera.name, cv::Mat(4, 4, CV_8UC3), {}});
+    io::OdometrySample odo;
+    odo.timestamp = t;
+    odo.speed = 1.5;
+    in.odometry.push_back(odo);
+    const FrameResult r = pipeline.process(in);
+    ASSERT_TRUE(r.has_pose) << "frame " << k;
+    EXPECT_LT((r.pose.translation() - spotter.pose.translation()).norm(), 0.01) << "frame " << k;
+    if (k > 0) EXPECT_LE(spotter.reads_asked, 2) << "frame " << k;
+    // Only texts read within the interval are fitted.
+    for (const auto& text : spotter.fitted_now) {
+      ASSERT_TRUE(last_read.count(text)) << text << " fitted before it was read, frame " << k;
+      EXPECT_LT(k - last_read[text], 10) << text << " frame " << k;
+    }
+    for (const auto& text : spotter.read_now) last_read[text] = k;
+    fitted_total += static_cast<int>(spotter.fitted_now.size());
+  }
+  EXPECT_GT(fitted_total, 100);  // most measurements come from fits
+}
+
+TEST(TrackedReading, OffReadsEveryRegion) {
+  const geometry::Rig rig = geometry::defaultRig();
+  const map::HdMap map = testing::aisleMap();
+  RecordingSpotter spotter(map);
+  PipelineOptions options;
+  options.reread_interval_frames = 0;
+  options.full_frame_interval = 1000;
+  Pipeline pipeline(rig, map, options, &spotter);
+  for (int k = 0; k < 10; ++k) {
+    spotter.pose = geometry::Pose2(0.1 * k, 0.1, 0.0);
+    spotter.fitted_now.clear();
+    FrameInput in;
+    in.timestamp = k / 10.0;
+    for (const auto& camera : rig.cameras)
+      in.cameras.push_back({camera.name, cv::Mat(4, 4, CV_8UC3), {}});
+    io::OdometrySample odo;
+    odo.timestamp = in.timestamp;
+    odo.speed = 1.0;
+    in.odometry.push_back(odo);
+    pipeline.process(in);
+    EXPECT_TRUE(spotter.fitted_now.empty()) << "frame " << k;
+  }
+}
+
+}  // namespace
+}  // namespace parkloc::localize

@@ -22,6 +22,7 @@ struct SimulateArgs {
   std::string out;
   long long seed = -1;
   int max_sequences = -1;
+  std::vector<std::string> splits;
   int max_frames = -1;
   int jobs = 1;
   bool quiet = false;
@@ -35,6 +36,7 @@ void runSimulate(const SimulateArgs& a) {
   options.out_dir = a.out;
   if (a.seed >= 0) options.seed = static_cast<uint64_t>(a.seed);
   options.max_sequences = a.max_sequences;
+  options.splits = a.splits;
   options.max_frames = a.max_frames;
   options.jobs = a.jobs;
   const auto start = std::chrono::steady_clock::now();
@@ -56,9 +58,10 @@ void runSimulate(const SimulateArgs& a) {
   std::cout << fmt::format("wrote {} sequences, {} frame sets, {} images to {}\n", s.sequences,
                            s.frame_sets, s.images, a.out);
   std::cout << fmt::format(
-      "instances: pillar {}, parking_number {}, other {} (occluded >= 0.5: {}, truncated: {})\n",
+      "instances: pillar {}, parking_number {}, other {} (occluded >= 0.5: {}, truncated: {}; "
+      "labelled too thin to read: {})\n",
       s.instances_per_class[0], s.instances_per_class[1], s.instances_per_class[2],
-      s.occluded_instances, s.truncated_instances);
+      s.occluded_instances, s.truncated_instances, s.illegible_instances);
   for (const auto& [k, v] : s.images_per_split)
     std::cout << fmt::format("split {}: {} images\n", k, v);
   for (const auto& [k, v] : s.images_per_condition)
@@ -143,6 +146,9 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
                   "Seed replacing the scenario's (every random choice changes)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-sequences", args->max_sequences, "Write at most N sequences");
+  cmd->add_option("--split", args->splits,
+                  "Only the sequences of this split (train, val, test; repeatable), with the "
+                  "same garages as in the whole dataset");
   cmd->add_option("--max-frames", args->max_frames, "Write at most N frame sets per sequence");
   cmd->add_option("--jobs", args->jobs, "Sequences rendered in parallel")->check(CLI::Range(1, 64));
   cmd->add_flag("--quiet", args->quiet, "No progress bar");

@@ -49,7 +49,7 @@ std::vector<int> detectionCorrectness(const io::ImageLabels& labels,
   std::vector<bool> dont_care;
   for (const auto& l : labels.instances) {
     truths.push_back(labelQuad(l));
-    dont_care.push_back(l.occluded_fraction >= options.dont_care_occlusion);
+    dont_care.push_back(l.occluded_fraction >= options.dont_care_occlusion || !l.legible);
   }
   for (const auto& d : detections) found.push_back(d.polygon);
   const ImageMatching m = matchDetections(truths, dont_care, found, options.matching);
@@ -65,7 +65,8 @@ std::vector<int> detectionCorrectness(const io::ImageLabels& labels,
 void addRotationTags(const io::ImageLabels& labels, double dont_care_occlusion,
                      std::set<std::string>& tags) {
   for (const auto& l : labels.instances) {
-    if (l.cls != map::TextClass::kParkingNumber || l.occluded_fraction >= dont_care_occlusion)
+    if (l.cls != map::TextClass::kParkingNumber || l.occluded_fraction >= dont_care_occlusion ||
+        !l.legible)
       continue;
     if (const auto rot = rotationSubset(l.rotation_deg)) tags.insert(*rot);
   }

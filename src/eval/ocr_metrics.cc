@@ -49,7 +49,8 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
   std::vector<bool> dont_care;
   for (const io::LabelInstance& instance : truth.instances) {
     truth_quads.push_back(toQuad(instance.polygon));
-    dont_care.push_back(instance.occluded_fraction >= options_.dont_care_occlusion);
+    dont_care.push_back(instance.occluded_fraction >= options_.dont_care_occlusion ||
+                        !instance.legible);
   }
   for (const ocr::TextInstance& d : detections) detection_quads.push_back(d.polygon);
   const ImageMatching matching =

@@ -79,6 +79,10 @@ LabelInstance readInstance(const json& j, const std::string& path, size_t index)
     if (!j["truncated"].is_boolean()) fail(path, where + "field 'truncated': expected a boolean");
     inst.truncated = j["truncated"].get<bool>();
   }
+  if (j.contains("legible")) {
+    if (!j["legible"].is_boolean()) fail(path, where + "field 'legible': expected a boolean");
+    inst.legible = j["legible"].get<bool>();
+  }
   if (j.contains("landmark_id")) inst.landmark_id = string(j, "landmark_id", path, where);
   if (j.contains("rotation_deg")) inst.rotation_deg = number(j, "rotation_deg", path, where);
   return inst;
@@ -125,6 +129,7 @@ void saveLabels(const ImageLabels& labels, const std::string& path) {
                          {"class", map::toString(inst.cls)},
                          {"occluded_fraction", inst.occluded_fraction},
                          {"truncated", inst.truncated},
+                         {"legible", inst.legible},
                          {"landmark_id", inst.landmark_id},
                          {"rotation_deg", inst.rotation_deg}});
   }
@@ -145,8 +150,8 @@ void saveIcdarLabels(const ImageLabels& labels, const std::string& path) {
   for (const LabelInstance& inst : labels.instances) {
     for (const auto& p : inst.polygon)
       out << std::lround(p.x()) << ',' << std::lround(p.y()) << ',';
-    out << (inst.occluded_fraction >= kIgnoreOccludedFraction ? std::string("###") : inst.text)
-        << "\n";
+    const bool ignore = inst.occluded_fraction >= kIgnoreOccludedFraction || !inst.legible;
+    out << (ignore ? std::string("###") : inst.text) << "\n";
   }
   if (!out) throw IoError(fmt::format("labels {}: write failed", path));
 }

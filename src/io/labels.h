@@ -4,10 +4,11 @@
 // {"camera": "front", "timestamp": 12.35, "width": 1280, "height": 800,
 //  "instances": [{"polygon": [[x, y] x4], "text": "B2-117", "class_id": 1,
 //                 "class": "parking_number", "occluded_fraction": 0.0, "truncated": false,
-//                 "landmark_id": "B2-117", "rotation_deg": 37.0}]}
+//                 "legible": true, "landmark_id": "B2-117", "rotation_deg": 37.0}]}
 // Polygons are in pixels (OpenCV convention), reading order: top-left, top-right,
 // bottom-right, bottom-left of the text as it reads. rotation_deg is the angle of the
-// reading direction in the image (0 = left to right, 180 = upside down).
+// reading direction in the image (0 = left to right, 180 = upside down). "legible" is false
+// for text too thin in the image to be read (ICDAR's "###", don't care); absent means true.
 #include <Eigen/Core>
 #include <array>
 #include <string>
@@ -23,6 +24,7 @@ struct LabelInstance {
   map::TextClass cls = map::TextClass::kParkingNumber;
   double occluded_fraction = 0.0;
   bool truncated = false;
+  bool legible = true;  // false: too thin to read, "don't care" in the metrics
   std::string landmark_id;
   double rotation_deg = 0.0;
 };
@@ -37,7 +39,8 @@ struct ImageLabels {
 
 ImageLabels loadLabels(const std::string& path);  // throws InputError
 void saveLabels(const ImageLabels& labels, const std::string& path);
-// ICDAR-2015 ground-truth text file; '###' marks instances to ignore (occluded >= 0.5).
+// ICDAR-2015 ground-truth text file; '###' marks instances to ignore (occluded >= 0.5 or
+// not legible).
 void saveIcdarLabels(const ImageLabels& labels, const std::string& path);
 
 }  // namespace parkloc::io

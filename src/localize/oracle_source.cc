@@ -8,6 +8,7 @@ std::vector<ocr::TextInstance> oracleInstances(const io::ImageLabels& labels,
   for (const auto& l : labels.instances) {
     if (l.occluded_fraction >= options.max_occluded_fraction) continue;
     if (options.skip_truncated && l.truncated) continue;
+    if (!l.legible) continue;  // the oracle reads what a reader could read
     ocr::TextInstance t;
     for (int i = 0; i < 4; ++i)
       t.polygon[i] =

@@ -20,7 +20,9 @@ ClassifierSamples collectClassifierSamples(const std::vector<std::string>& seque
         const cv::Mat image = sequence.loadImage(f, camera);
         if (image.empty() || image.type() != CV_8UC3) continue;
         for (const auto& inst : labels->instances) {
-          if (inst.occluded_fraction >= options.max_occluded_fraction || inst.truncated) continue;
+          if (inst.occluded_fraction >= options.max_occluded_fraction || inst.truncated ||
+              !inst.legible)
+            continue;
           Quad quad;
           for (int k = 0; k < 4; ++k)
             quad[k] = cv::Point2f(static_cast<float>(inst.polygon[k].x()),

@@ -64,7 +64,8 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
     };
     const double area = 0.5 * std::abs(cross2(poly[2] - poly[0], poly[3] - poly[1]));
     const double length = 0.5 * ((poly[1] - poly[0]).norm() + (poly[2] - poly[3]).norm());
-    if (length <= 0.0 || area / length < options.min_height_px) continue;
+    if (length <= 0.0 || area / length < options.min_labelled_height_px) continue;
+    const bool legible = area / length >= options.min_height_px;
     // Sample points on the text: inside the image, and seen or hidden.
     int inside = 0, hidden = 0, total = 0;
     const Eigen::Vector3d r = lm.readingDirection() * lm.width;
@@ -87,6 +88,7 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
     inst.cls = lm.cls;
     inst.landmark_id = lm.id;
     inst.occluded_fraction = static_cast<double>(hidden) / inside;
+    inst.legible = legible;
     inst.truncated = inside < total;
     for (const auto& c : poly) inst.truncated = inst.truncated || !camera.model.inImage(c);
     const Eigen::Vector2d reading = 0.5 * (poly[1] + poly[2]) - 0.5 * (poly[0] + poly[3]);

@@ -12,7 +12,11 @@
 namespace parkloc::sim {
 
 struct AnnotateOptions {
-  double min_height_px = 8.0;        // shorter text is left out
+  // Apparent height (area over reading length) below which text is too thin to read: it is
+  // labelled "not legible" (don't care) down to min_labelled_height_px and left out below,
+  // so that a detector that still finds it is neither rewarded nor counted wrong.
+  double min_height_px = 8.0;
+  double min_labelled_height_px = 3.0;
   double max_distance = 30.0;        // metres from the camera
   double min_inside_fraction = 0.3;  // of the text's sample points inside the image
   int samples_u = 7, samples_v = 3;  // grid of points on the text for occlusion

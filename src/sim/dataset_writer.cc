@@ -87,6 +87,16 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
   Scenario scenario = scenario_in;
   if (options.seed) scenario.seed = *options.seed;
   std::vector<SequencePlan> plans = planSequences(scenario);
+  for (const auto& split : options.splits)
+    if (split != "train" && split != "val" && split != "test")
+      throw InputError(fmt::format("simulate: unknown split '{}' (train, val or test)", split));
+  if (!options.splits.empty())
+    plans.erase(std::remove_if(plans.begin(), plans.end(),
+                               [&](const SequencePlan& p) {
+                                 return std::find(options.splits.begin(), options.splits.end(),
+                                                  p.split) == options.splits.end();
+                               }),
+                plans.end());
   if (options.max_sequences >= 0 && static_cast<size_t>(options.max_sequences) < plans.size())
     plans.resize(options.max_sequences);
   for (const auto& p : plans)
@@ -208,6 +218,10 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
         ++local.images_per_condition[plan.condition];
         ++local.images_per_split[plan.split];
         for (const auto& inst : labels.instances) {
+          if (!inst.legible) {
+            ++local.illegible_instances;
+            continue;
+          }
           ++local.instances_per_class[static_cast<int>(inst.cls)];
           ++local.instances_per_condition[plan.condition];
           const std::string rot = rotationSubset(inst.rotation_deg);
@@ -276,6 +290,7 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
     for (const auto& [k, v] : local.images_per_split) stats.images_per_split[k] += v;
     stats.occluded_instances += local.occluded_instances;
     stats.truncated_instances += local.truncated_instances;
+    stats.illegible_instances += local.illegible_instances;
     stats.render_seconds += local.render_seconds;
   };
 

@@ -18,8 +18,11 @@ struct DatasetOptions {
   std::string out_dir;
   std::optional<uint64_t> seed;  // replaces the scenario's seed
   int max_sequences = -1;        // < 0: all
-  int max_frames = -1;           // per sequence; < 0: all
-  int jobs = 1;                  // sequences rendered at the same time
+  // Only the sequences of these splits (empty: all). Garages keep the seeds they have in the
+  // whole scenario, so `--split test` writes exactly the test split of the full dataset.
+  std::vector<std::string> splits;
+  int max_frames = -1;  // per sequence; < 0: all
+  int jobs = 1;         // sequences rendered at the same time
 };
 
 // What was written. Rotation subsets follow the paper's Table 8: |rotation_deg| about 45
@@ -28,6 +31,7 @@ struct DatasetStats {
   int sequences = 0;
   int frame_sets = 0;
   int images = 0;
+  // Legible instances only; the thinner ones (labelled "legible": false) are counted apart.
   std::array<int, 3> instances_per_class{0, 0, 0};  // pillar, parking number, other
   std::map<std::string, int> images_per_condition;  // bright, weak, blur
   std::map<std::string, int> instances_per_condition;
@@ -35,6 +39,7 @@ struct DatasetStats {
   std::map<std::string, int> images_per_split;
   int occluded_instances = 0;  // occluded_fraction >= 0.5
   int truncated_instances = 0;
+  int illegible_instances = 0;
   double render_seconds = 0.0;  // summed over sequences (CPU-parallel time counts once per job)
   double wall_seconds = 0.0;
 };

@@ -32,7 +32,10 @@ ImageLabels sampleLabels() {
   pillar.truncated = true;
   pillar.landmark_id = "P-C3";
   pillar.rotation_deg = 180.0;
-  labels.instances = {number, pillar};
+  LabelInstance thin = number;
+  thin.text = "B2-118";
+  thin.legible = false;
+  labels.instances = {number, pillar, thin};
   return labels;
 }
 
@@ -60,16 +63,35 @@ TEST_F(LabelsTest, JsonRoundTripIsExact) {
     EXPECT_EQ(a.cls, b.cls);
     EXPECT_EQ(a.occluded_fraction, b.occluded_fraction);
     EXPECT_EQ(a.truncated, b.truncated);
+    EXPECT_EQ(a.legible, b.legible);
     EXPECT_EQ(a.landmark_id, b.landmark_id);
     EXPECT_EQ(a.rotation_deg, b.rotation_deg);
   }
 }
 
-TEST_F(LabelsTest, IcdarFileRoundsAndMarksOccludedText) {
+TEST_F(LabelsTest, IcdarFileRoundsAndMarksOccludedAndIllegibleText) {
   saveIcdarLabels(sampleLabels(), path("gt.txt"));
   EXPECT_EQ(readAll(path("gt.txt")),
             "100,201,181,201,179,240,99,239,B2-117\n"
+            "100,201,181,201,179,240,99,239,###\n"
             "100,201,181,201,179,240,99,239,###\n");
+}
+
+TEST_F(LabelsTest, LegibleDefaultsToTrueAndMustBeABoolean) {
+  const std::string ok = write("old.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
+      "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "text": "A",
+      "class": "pillar"}]})");
+  EXPECT_TRUE(loadLabels(ok).instances.at(0).legible);
+  const std::string bad = write("bad.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
+      "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "text": "A",
+      "class": "pillar", "legible": "yes"}]})");
+  try {
+    loadLabels(bad);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "labels " + bad + ": instance #0: field 'legible': expected a boolean");
+  }
 }
 
 TEST_F(LabelsTest, MissingFieldIsNamed) {

@@ -58,6 +58,39 @@ TEST(DatasetWriter, WritesALoadableSequence) {
   fs::remove_all(out);
 }
 
+TEST(DatasetWriter, OneSplitHasTheSameGaragesAsTheWholeDataset) {
+  namespace fs = std::filesystem;
+  const fs::path base =
+      fs::temp_directory_path() / ("parkloc_sim_split_" + std::to_string(::getpid()));
+  fs::remove_all(base);
+  Scenario s = demoScenario();
+  s.garages[0].slots_per_row = 9;
+  s.garages.push_back(s.garages[0]);
+  s.garages[0].split = "train";
+  s.garages[0].name = "ga";
+  s.garages[1].split = "test";
+  s.garages[1].name = "gb";
+  auto metaOf = [](const fs::path& dir) {
+    std::ifstream in(dir / "meta.json");
+    return nlohmann::json::parse(in);
+  };
+  DatasetOptions options;
+  options.max_frames = 1;
+  options.out_dir = (base / "all").string();
+  EXPECT_EQ(writeDataset(s, options).sequences, 2);
+  options.out_dir = (base / "test").string();
+  options.splits = {"test"};
+  EXPECT_EQ(writeDataset(s, options).sequences, 1);
+  const std::string name = planSequences(s)[1].name;
+  ASSERT_TRUE(fs::exists(base / "test" / "sequences" / name));
+  EXPECT_FALSE(fs::exists(base / "test" / "sequences" / planSequences(s)[0].name));
+  EXPECT_EQ(metaOf(base / "test" / "sequences" / name).at("garage_seed"),
+            metaOf(base / "all" / "sequences" / name).at("garage_seed"));
+  options.splits = {"tset"};
+  EXPECT_THROW(writeDataset(s, options), InputError);
+  fs::remove_all(base);
+}
+
 TEST(DatasetWriter, RejectsBadOptions) {
   DatasetOptions options;
   EXPECT_THROW(writeDataset(demoScenario(), options), InputError);

@@ -309,7 +309,7 @@ struct Pipeline::Impl {
 
   // Tracking: texts read lately are only fitted; of the others, the largest are read,
   // at most max_reads_per_frame over all cameras; the rest wait for a later frame.
-  void chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& candidates) {
+  void chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& candidates, bool sweeping) {
     struct Unread {
       size_t camera, index;
       double size;
@@ -336,7 +336,8 @@ struct Pipeline::Impl {
     }
     std::stable_sort(unread.begin(), unread.end(),
                      [](const Unread& a, const Unread& b) { return a.size > b.size; });
-    const size_t reads = options.max_reads_per_frame > 0
+    const size_t reads = sweeping ? 0
+                         : options.max_reads_per_frame > 0
                              ? std::min(unread.size(), size_t(options.max_reads_per_frame))
                              : unread.size();
     for (size_t k = 0; k < reads; ++k) {
@@ -683,7 +684,8 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
         }
     }
     candidates = std::move(kept);
-    if (options.reread_interval_frames > 0) chooseReadsAndFits(candidates);
+    // A frame set that sweeps a camera on the full frame spends its reads there.
+    if (options.reread_interval_frames > 0) chooseReadsAndFits(candidates, one_full_frame);
   }
   ++frame_index;
   result.timings.roi_ms += msSince(t_roi);

@@ -185,6 +185,8 @@ struct Pipeline::Impl {
     EkfOptions ekf_options;
     ekf_options.speed_sigma = options.odo_speed_sigma;
     ekf_options.yaw_rate_sigma = options.odo_yaw_rate_sigma;
+    ekf_options.yaw_rate_bias_sigma = options.odo_yaw_rate_bias_sigma;
+    ekf_options.yaw_rate_bias_walk = options.odo_yaw_rate_bias_walk;
     ekf_options.no_odometry_position_sigma = options.no_odometry_pos_sigma;
     ekf_options.no_odometry_yaw_sigma = options.no_odometry_yaw_sigma;
     ekf = PoseEkf(ekf_options);

@@ -87,6 +87,10 @@ struct PipelineOptions {
   double odo_yaw_rate_sigma = 0.01;    // rad/s
   double no_odometry_pos_sigma = 0.5;  // m/sqrt(s), random walk when no odometry
   double no_odometry_yaw_sigma = 0.1;  // rad/sqrt(s)
+  // Yaw-rate bias of the odometry, a state of the EKF: prior (rad/s, 1 sigma) and random walk
+  // (rad/s/sqrt(s)).
+  double odo_yaw_rate_bias_sigma = 0.02;
+  double odo_yaw_rate_bias_walk = 0.001;
 
   // Tracking state.
   double lost_position_sigma_m = 2.0;   // 1-sigma position beyond which the filter is lost

@@ -3,6 +3,14 @@
 // rate) as the motion input and absolute pose fixes as measurements. Beyond the paper, which
 // has no temporal fusion: it gives a pose every frame (dead reckoning with a growing
 // covariance when no text is seen) and a prediction to gate associations against.
+//
+// The state also holds the two systematic errors of wheel odometry, each a random walk: the
+// yaw-rate bias b (the vehicle turns at measured - b; a gyro or wheel-based yaw rate is
+// offset by a slowly drifting amount) and the speed scale s (the vehicle moves at s *
+// measured; the wheel radius is known to about a percent). A filter that treats them as
+// white noise is overconfident between fixes and lags behind them (docs/RELIABILITY.md,
+// "Consistent uncertainty"). The pose fixes observe both through the heading and the
+// distance they correct.
 #include <Eigen/Core>
 #include <optional>
 
@@ -11,9 +19,14 @@
 namespace parkloc::localize {
 
 struct EkfOptions {
-  double speed_sigma = 0.05;        // odometry speed noise, m/s (1 sigma)
-  double yaw_rate_sigma = 0.01;     // odometry yaw-rate noise, rad/s
-  double speed_scale_sigma = 0.02;  // relative speed (wheel radius) error
+  double speed_sigma = 0.05;     // odometry speed noise, m/s (1 sigma)
+  double yaw_rate_sigma = 0.01;  // odometry yaw-rate white noise, rad/s
+  // Yaw-rate bias: its prior (1 sigma, rad/s, mean 0) and its random walk (rad/s/sqrt(s)).
+  double yaw_rate_bias_sigma = 0.02;
+  double yaw_rate_bias_walk = 0.001;
+  // Speed scale (wheel radius error): its prior (1 sigma around 1) and random walk (1/sqrt(s)).
+  double speed_scale_sigma = 0.02;
+  double speed_scale_walk = 0.001;
   // Random walk when no odometry drives the prediction.
   double no_odometry_position_sigma = 0.5;  // m / sqrt(s)
   double no_odometry_yaw_sigma = 0.1;       // rad / sqrt(s)
@@ -21,24 +34,42 @@ struct EkfOptions {
 
 class PoseEkf {
  public:
-  explicit PoseEkf(EkfOptions options = {}) : options_(options) {}
+  // State: x, y, yaw, yaw-rate bias, speed scale.
+  static constexpr int kStateSize = 5;
+  using StateVector = Eigen::Matrix<double, kStateSize, 1>;
+  using StateMatrix = Eigen::Matrix<double, kStateSize, kStateSize>;
+
+  explicit PoseEkf(EkfOptions options = {});
 
   bool initialised() const { return initialised_; }
+  // Sets the pose and its covariance. The bias and scale estimates are kept (they belong to
+  // the sensor, not to the pose: a re-localisation does not change them); their correlation
+  // with the old pose is dropped.
   void initialise(const geometry::Pose2& pose, const Eigen::Matrix3d& covariance, double time);
-  void reset() { initialised_ = false; }
+  // Forgets everything, the bias and scale estimates included (back to their priors).
+  void reset();
 
-  // Motion over dt seconds with the given speed and yaw rate (unicycle, exact arc).
+  // Motion over dt seconds with the measured speed and yaw rate (unicycle, exact arc; the
+  // vehicle moves at speedScale() * speed and turns at yaw_rate - yawRateBias()).
   void predictWithOdometry(double speed, double yaw_rate, double dt);
   // No odometry: the pose stays, the covariance grows as a random walk.
   void predictWithoutOdometry(double dt);
 
   // Squared Mahalanobis distance of a pose fix with covariance R from the prediction.
   double mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& R) const;
-  // Standard EKF update with a direct pose measurement (H = I, yaw innovation wrapped).
+  // Standard EKF update with a direct pose measurement (H = [I 0], yaw innovation wrapped).
   void update(const geometry::Pose2& fix, const Eigen::Matrix3d& R);
 
   const geometry::Pose2& pose() const { return pose_; }
-  const Eigen::Matrix3d& covariance() const { return covariance_; }
+  // Marginal covariance of (x, y, yaw).
+  Eigen::Matrix3d covariance() const { return covariance_.topLeftCorner<3, 3>(); }
+  // Odometry error estimates and their variances.
+  double yawRateBias() const { return bias_; }  // rad/s
+  double yawRateBiasVariance() const { return covariance_(3, 3); }
+  double speedScale() const { return scale_; }
+  double speedScaleVariance() const { return covariance_(4, 4); }
+  // Covariance of the whole state (x, y, yaw, bias, scale).
+  const StateMatrix& fullCovariance() const { return covariance_; }
   double time() const { return time_; }
   void setTime(double time) { time_ = time; }
 
@@ -46,7 +77,9 @@ class PoseEkf {
   EkfOptions options_;
   bool initialised_ = false;
   geometry::Pose2 pose_;
-  Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Identity();
+  double bias_ = 0.0;
+  double scale_ = 1.0;
+  StateMatrix covariance_ = StateMatrix::Identity();
   double time_ = 0.0;
 };
 

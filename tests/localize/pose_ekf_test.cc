@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <cmath>
+#include <random>
 
 namespace parkloc::localize {
 namespace {
@@ -61,6 +64,204 @@ TEST(PoseEkf, UpdateShrinksCovarianceAndMovesTowardsTheFix) {
   wrap.initialise({0.0, 0.0, -179.0 * M_PI / 180}, Eigen::Matrix3d::Identity(), 0.0);
   wrap.update({0.0, 0.0, 179.0 * M_PI / 180}, Eigen::Matrix3d::Identity());
   EXPECT_NEAR(std::abs(wrap.pose().yaw), M_PI, 1.1 * M_PI / 180);
+}
+
+// A drive along a gentle S-curve at 2 m/s with odometry at 50 Hz whose yaw rate reads
+// true + bias + white noise and whose speed reads true / scale + white noise; a pose fix
+// (the true pose plus Gaussian noise of covariance R) every `fix_every` samples.
+struct OdometryErrors {
+  double yaw_rate_bias = 0.0;
+  double speed_scale = 1.0;
+};
+
+struct SimulatedDrive {
+  PoseEkf ekf;
+  geometry::Pose2 truth;
+  std::vector<double> nees;  // after every fix
+};
+
+SimulatedDrive drive(const EkfOptions& options, const OdometryErrors& errors, int fix_every,
+                     double seconds, unsigned seed) {
+  constexpr double kDt = 0.02, kSpeed = 2.0;
+  const double yaw_sigma = 0.5 * M_PI / 180.0, position_sigma = 0.02;
+  const Eigen::Matrix3d R = Eigen::Vector3d(position_sigma * position_sigma,
+                                            position_sigma * position_sigma, yaw_sigma * yaw_sigma)
+                                .asDiagonal();
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  SimulatedDrive d{PoseEkf(options), geometry::Pose2(0.0, 0.0, 0.0), {}};
+  d.ekf.initialise(d.truth, R, 0.0);
+  const int steps = static_cast<int>(std::lround(seconds / kDt));
+  for (int i = 1; i <= steps; ++i) {
+    const double rate = 0.2 * std::sin(0.3 * i * kDt);
+    d.ekf.predictWithOdometry(kSpeed / errors.speed_scale + options.speed_sigma * gauss(rng),
+                              rate + errors.yaw_rate_bias + options.yaw_rate_sigma * gauss(rng),
+                              kDt);
+    // The truth moves on the exact arc of the true inputs (the filter's own motion model).
+    PoseEkf exact;
+    exact.initialise(d.truth, Eigen::Matrix3d::Zero(), 0.0);
+    exact.predictWithOdometry(kSpeed, rate, kDt);
+    d.truth = exact.pose();
+    if (fix_every > 0 && i % fix_every == 0) {
+      const geometry::Pose2 fix(d.truth.x + position_sigma * gauss(rng),
+                                d.truth.y + position_sigma * gauss(rng),
+                                d.truth.yaw + yaw_sigma * gauss(rng));
+      d.ekf.update(fix, R);
+      const Eigen::Vector3d e(d.ekf.pose().x - d.truth.x, d.ekf.pose().y - d.truth.y,
+                              geometry::wrapAngle(d.ekf.pose().yaw - d.truth.yaw));
+      d.nees.push_back(e.dot(d.ekf.covariance().ldlt().solve(e)));
+    }
+  }
+  return d;
+}
+
+double fractionInside(const std::vector<double>& nees, double bound) {
+  size_t inside = 0;
+  for (double v : nees) inside += v <= bound ? 1 : 0;
+  return static_cast<double>(inside) / static_cast<double>(nees.size());
+}
+
+// 95 % quantile of chi-square with 3 degrees of freedom.
+constexpr double kNeesBound = 7.815;
+
+TEST(PoseEkf, OdometryErrorsConvergeFromPoseFixes) {
+  // 0.02 rad/s (1.15 deg/s), the bias the fault injection uses (1 sigma of the prior), and
+  // a wheel radius 1.5 % off.
+  const OdometryErrors errors{0.02, 1.015};
+  const EkfOptions options;
+  const SimulatedDrive d = drive(options, errors, 5, 60.0, 7);
+  // After a minute the filter's own sigmas are a small part of the errors, and the
+  // estimates lie within 4 of them (a 1-dof Gaussian leaves that with probability 6e-5).
+  const double bias_sigma = std::sqrt(d.ekf.yawRateBiasVariance());
+  const double scale_sigma = std::sqrt(d.ekf.speedScaleVariance());
+  EXPECT_LT(bias_sigma, 0.1 * errors.yaw_rate_bias);
+  EXPECT_NEAR(d.ekf.yawRateBias(), errors.yaw_rate_bias, 4.0 * bias_sigma);
+  EXPECT_LT(scale_sigma, 0.2 * (errors.speed_scale - 1.0));
+  EXPECT_NEAR(d.ekf.speedScale(), errors.speed_scale, 4.0 * scale_sigma);
+  // The pose stays on the truth, within 4 sigma of its covariance, and the covariance is
+  // honest over the drive.
+  EXPECT_LT(std::hypot(d.ekf.pose().x - d.truth.x, d.ekf.pose().y - d.truth.y),
+            4.0 * std::sqrt(d.ekf.covariance().topLeftCorner<2, 2>().trace()));
+  EXPECT_GE(fractionInside(d.nees, kNeesBound), 0.9);
+}
+
+TEST(PoseEkf, WithoutTheOdometryStatesTheSameDriveIsOverconfident) {
+  // The same drive with bias and scale fixed (prior and walk 0): the odometry errors are
+  // noise the filter does not know of, and most fix frames fall outside the bound.
+  EkfOptions options;
+  options.yaw_rate_bias_sigma = options.yaw_rate_bias_walk = 0.0;
+  options.speed_scale_sigma = options.speed_scale_walk = 0.0;
+  const SimulatedDrive d = drive(options, {0.02, 1.015}, 5, 60.0, 7);
+  EXPECT_EQ(d.ekf.yawRateBias(), 0.0);
+  EXPECT_EQ(d.ekf.speedScale(), 1.0);
+  EXPECT_LT(fractionInside(d.nees, kNeesBound), 0.5);
+}
+
+TEST(PoseEkf, OdometryErrorPriorsMakeDeadReckoningUncertaintyGrowWithTime) {
+  EkfOptions options;
+  options.yaw_rate_sigma = options.speed_sigma = 0.0;
+  options.yaw_rate_bias_walk = options.speed_scale_walk = 0.0;
+  PoseEkf ekf(options);
+  ekf.initialise({0.0, 0.0, 0.0}, Eigen::Matrix3d::Zero(), 0.0);
+  // Straight ahead at 1 m/s for 2 s: the heading error is b t (variance sigma_b^2 t^2), the
+  // distance error (s - 1) t.
+  for (int i = 0; i < 100; ++i) ekf.predictWithOdometry(1.0, 0.0, 0.02);
+  const double t = 2.0, sb = options.yaw_rate_bias_sigma, ss = options.speed_scale_sigma;
+  EXPECT_NEAR(ekf.covariance()(2, 2), sb * sb * t * t, 1e-12);
+  EXPECT_NEAR(ekf.fullCovariance()(2, 3), -sb * sb * t, 1e-12);
+  EXPECT_NEAR(ekf.covariance()(0, 0), ss * ss * t * t, 1e-12);
+  // The bias and scale themselves grow only by their random walks, also without odometry.
+  EkfOptions walking;
+  walking.yaw_rate_bias_walk = 0.01;
+  walking.speed_scale_walk = 0.002;
+  PoseEkf w(walking);
+  w.initialise({0.0, 0.0, 0.0}, Eigen::Matrix3d::Zero(), 0.0);
+  const double bias_before = w.yawRateBiasVariance(), scale_before = w.speedScaleVariance();
+  w.predictWithoutOdometry(4.0);
+  EXPECT_NEAR(w.yawRateBiasVariance() - bias_before, 0.01 * 0.01 * 4.0, 1e-15);
+  EXPECT_NEAR(w.speedScaleVariance() - scale_before, 0.002 * 0.002 * 4.0, 1e-15);
+}
+
+TEST(PoseEkf, ReinitialisingKeepsTheOdometryEstimatesAndResetForgetsThem) {
+  PoseEkf ekf = drive(EkfOptions{}, {0.02, 1.015}, 5, 30.0, 11).ekf;
+  const double bias = ekf.yawRateBias(), scale = ekf.speedScale();
+  const Eigen::Matrix2d odometry = ekf.fullCovariance().bottomRightCorner<2, 2>();
+  ekf.initialise({5.0, 5.0, 1.0}, Eigen::Matrix3d::Identity(), 0.0);
+  EXPECT_EQ(ekf.yawRateBias(), bias);
+  EXPECT_EQ(ekf.speedScale(), scale);
+  EXPECT_TRUE((ekf.fullCovariance().bottomRightCorner<2, 2>() - odometry).isZero(0.0));
+  EXPECT_TRUE((ekf.fullCovariance().topRightCorner<3, 2>().isZero(0.0)));
+  ekf.reset();
+  EXPECT_FALSE(ekf.initialised());
+  EXPECT_EQ(ekf.yawRateBias(), 0.0);
+  EXPECT_EQ(ekf.speedScale(), 1.0);
+  const EkfOptions defaults;
+  EXPECT_NEAR(ekf.yawRateBiasVariance(),
+              defaults.yaw_rate_bias_sigma * defaults.yaw_rate_bias_sigma, 1e-15);
+  EXPECT_NEAR(ekf.speedScaleVariance(), defaults.speed_scale_sigma * defaults.speed_scale_sigma,
+              1e-15);
+}
+
+TEST(PoseEkf, PoseUpdateEqualsTheTextbookKalmanUpdateOfTheFullState) {
+  PoseEkf ekf;
+  ekf.initialise({1.0, 2.0, 0.1}, Eigen::Vector3d(0.04, 0.09, 0.01).asDiagonal(), 0.0);
+  for (int i = 0; i < 20; ++i) ekf.predictWithOdometry(1.5, 0.1, 0.05);
+  const PoseEkf::StateMatrix P = ekf.fullCovariance();
+  const geometry::Pose2 x = ekf.pose();
+  const double bias = ekf.yawRateBias(), scale = ekf.speedScale();
+  const Eigen::Matrix3d R = Eigen::Vector3d(0.01, 0.02, 0.001).asDiagonal();
+  const Eigen::Vector3d innovation(0.1, -0.05, 0.02);
+  Eigen::Matrix<double, 3, PoseEkf::kStateSize> H;
+  H.setZero();
+  H.leftCols<3>().setIdentity();
+  const Eigen::Matrix<double, PoseEkf::kStateSize, 3> K =
+      P * H.transpose() * (H * P * H.transpose() + R).inverse();
+  const PoseEkf::StateVector dx = K * innovation;
+  const PoseEkf::StateMatrix expected = (PoseEkf::StateMatrix::Identity() - K * H) * P;
+  ekf.update({x.x + innovation(0), x.y + innovation(1), x.yaw + innovation(2)}, R);
+  EXPECT_NEAR(ekf.pose().x, x.x + dx(0), 1e-12);
+  EXPECT_NEAR(ekf.pose().y, x.y + dx(1), 1e-12);
+  EXPECT_NEAR(ekf.pose().yaw, x.yaw + dx(2), 1e-12);
+  EXPECT_NEAR(ekf.yawRateBias(), bias + dx(3), 1e-12);
+  EXPECT_NEAR(ekf.speedScale(), scale + dx(4), 1e-12);
+  EXPECT_TRUE(ekf.fullCovariance().isApprox(expected, 1e-9));
+}
+
+TEST(PoseEkf, OdometryErrorJacobiansMatchCentralDifferences) {
+  // With only the bias and scale uncertain (identity) the predicted covariance is
+  // F P F^T, whose cross terms P'(pose, bias / scale) are the Jacobian columns.
+  constexpr double kSpeed = 2.0, kRate = 0.3, kDt = 0.1, kStep = 1e-6;
+  EkfOptions o;
+  o.yaw_rate_sigma = o.speed_sigma = 0.0;
+  o.yaw_rate_bias_walk = o.speed_scale_walk = 0.0;
+  o.yaw_rate_bias_sigma = o.speed_scale_sigma = 1.0;
+  const geometry::Pose2 start(0.5, -0.2, 0.7);
+  PoseEkf ekf(o);
+  ekf.initialise(start, Eigen::Matrix3d::Zero(), 0.0);
+  ekf.predictWithOdometry(kSpeed, kRate, kDt);
+  // The motion with a given bias and scale: the filter at b = 0, s = 1 fed the inputs that
+  // bias and scale turn the measured ones into.
+  auto moved = [&](double bias, double scale) {
+    PoseEkf e;
+    e.initialise(start, Eigen::Matrix3d::Zero(), 0.0);
+    e.predictWithOdometry(scale * kSpeed, kRate - bias, kDt);
+    return e.pose();
+  };
+  auto difference = [&](const geometry::Pose2& plus,
+                        const geometry::Pose2& minus) -> Eigen::Vector3d {
+    return Eigen::Vector3d(plus.x - minus.x, plus.y - minus.y,
+                           geometry::wrapAngle(plus.yaw - minus.yaw)) /
+           (2.0 * kStep);
+  };
+  const Eigen::Vector3d by_bias = difference(moved(kStep, 1.0), moved(-kStep, 1.0));
+  const Eigen::Vector3d by_scale = difference(moved(0.0, 1.0 + kStep), moved(0.0, 1.0 - kStep));
+  const Eigen::Matrix<double, 3, 2> analytic = ekf.fullCovariance().topRightCorner<3, 2>();
+  EXPECT_NEAR(analytic(2, 0), by_bias(2), 1e-8);
+  EXPECT_NEAR(analytic(0, 0), by_bias(0), 1e-8);
+  EXPECT_NEAR(analytic(1, 0), by_bias(1), 1e-8);
+  EXPECT_NEAR(analytic(0, 1), by_scale(0), 1e-8);
+  EXPECT_NEAR(analytic(1, 1), by_scale(1), 1e-8);
+  EXPECT_NEAR(analytic(2, 1), 0.0, 1e-12);
 }
 
 }  // namespace

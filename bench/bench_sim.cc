@@ -40,7 +40,7 @@ void BM_RenderFrameSet(benchmark::State& state) {
     ++k;
   }
 }
-BENCHMARK(BM_RenderFrameSet)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_RenderFrameSet)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
 
 void BM_AnnotateFrameSet(benchmark::State& state) {
   Fixture& f = Fixture::get();

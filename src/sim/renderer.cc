@@ -15,19 +15,53 @@ namespace {
 constexpr int kTile = 16;
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-float bilinearF(const cv::Mat& m, float x, float y) {
-  if (!(std::isfinite(x) && std::isfinite(y))) x = y = 0.0f;  // never index with NaN
-  x = std::clamp(x, 0.0f, static_cast<float>(m.cols - 1) - 1e-3f);
-  y = std::clamp(y, 0.0f, static_cast<float>(m.rows - 1) - 1e-3f);
-  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
-  const float ax = x - x0, ay = y - y0;
-  const float* r0 = m.ptr<float>(y0);
-  const float* r1 = m.ptr<float>(std::min(y0 + 1, m.rows - 1));
-  const int x1 = std::min(x0 + 1, m.cols - 1);
-  const float top = r0[x0] + ax * (r0[x1] - r0[x0]);
-  const float bottom = r1[x0] + ax * (r1[x1] - r1[x0]);
-  return top + ay * (bottom - top);
-}
+// A CV_32F map viewed for bilinear lookups, with what every lookup needs at hand (cv::Mat
+// keeps its row step one indirection away). The map must outlive the view.
+struct FloatGrid {
+  const float* data = nullptr;
+  int cols = 0, rows = 0;
+  size_t stride = 0;  // floats per row
+  float xmax = 0.0f, ymax = 0.0f;
+  FloatGrid() = default;
+  explicit FloatGrid(const cv::Mat& m)
+      : data(m.ptr<float>()),
+        cols(m.cols),
+        rows(m.rows),
+        stride(m.step1()),
+        xmax(static_cast<float>(m.cols - 1) - 1e-3f),
+        ymax(static_cast<float>(m.rows - 1) - 1e-3f) {
+    CV_Assert(m.type() == CV_32FC1 && !m.empty());
+  }
+  // Bilinear at (x, y) in texels (centres at integers); outside (or NaN) reads the border.
+  float at(float x, float y) const {
+    x = x >= 0.0f ? std::min(x, xmax) : 0.0f;  // NaN compares false: reads texel 0
+    y = y >= 0.0f ? std::min(y, ymax) : 0.0f;
+    const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+    const float ax = x - static_cast<float>(x0), ay = y - static_cast<float>(y0);
+    const float* r0 = data + stride * static_cast<size_t>(y0);
+    const float* r1 = y0 + 1 < rows ? r0 + stride : r0;
+    const int x1 = x0 + 1 < cols ? x0 + 1 : x0;
+    const float top = r0[x0] + ax * (r0[x1] - r0[x0]);
+    const float bottom = r1[x0] + ax * (r1[x1] - r1[x0]);
+    return top + ay * (bottom - top);
+  }
+};
+
+// Index lists per cell of a grid, stored flat: the items of cell c are
+// items[start[c], start[c + 1]).
+struct CellLists {
+  std::vector<int> start, items;
+  void build(const std::vector<std::vector<int>>& per_cell) {
+    start.assign(per_cell.size() + 1, 0);
+    for (size_t c = 0; c < per_cell.size(); ++c)
+      start[c + 1] = start[c] + static_cast<int>(per_cell[c].size());
+    items.clear();
+    items.reserve(static_cast<size_t>(start.back()));
+    for (const auto& cell : per_cell) items.insert(items.end(), cell.begin(), cell.end());
+  }
+  const int* begin(size_t c) const { return items.data() + start[c]; }
+  const int* end(size_t c) const { return items.data() + start[c + 1]; }
+};
 
 // Small fast generator for sensor noise, seeded per row so rows can run in any order.
 struct XorShift {
@@ -149,17 +183,27 @@ struct Renderer::Impl {
   std::vector<uint8_t> lamp_is_on;  // per lamp of the level
   // Irradiance on vertical surfaces facing +x, -x, +y, -y at 1 m height (4 texels per metre).
   cv::Mat vertical_light[4];
+  FloatGrid vertical_grid[4];
   static constexpr float kVerticalTpm = 4.0f;
   // Cells (0.5 m) with any white / yellow paint nearby: floor pixels elsewhere skip the lookup.
   std::vector<uint8_t> paint_mask;
+  MipTexturePair paint;  // white and yellow
   int paint_mask_w = 0, paint_mask_h = 0;
   // Floor irradiance (10 texels per metre) and ceiling brightness.
   cv::Mat floor_light, ceiling_light;
+  FloatGrid floor_light_grid, ceiling_light_grid, floor_shade_grid;
   float light_tpm = 10.0f;
   // Uniform grids (1 m cells) of floor decals and of lamps.
   int grid_w = 0, grid_h = 0;
-  std::vector<std::vector<int>> decal_grid, lamp_grid;
-  std::vector<uint8_t> gamma_lut;
+  CellLists decal_grid, lamp_grid;
+  // Per camera: its unit rays turned into the vehicle frame, with the pixel angle in w (0
+  // where the model has no ray). The vehicle only turns about z, so per frame a pixel's map
+  // ray is this one rotated by the yaw: two multiply-adds instead of a 3x3 product.
+  struct VehicleRay {
+    float x, y, z, angle;
+  };
+  std::vector<std::vector<VehicleRay>> vehicle_rays;
+  std::vector<float> gamma_lut;  // 8-bit values, as float for the noise sum
   static constexpr int kLutSize = 4096;
   static constexpr float kLutMax = 1.5f;
 
@@ -195,6 +239,9 @@ struct Renderer::Impl {
           ceiling_light.at<float>(y, x) = c;
         }
     });
+    floor_light_grid = FloatGrid(floor_light);
+    ceiling_light_grid = FloatGrid(ceiling_light);
+    floor_shade_grid = FloatGrid(L.floor_shade);
     const int vw = static_cast<int>(std::ceil(g.size.x() * kVerticalTpm)) + 1;
     const int vh = static_cast<int>(std::ceil(g.size.y() * kVerticalTpm)) + 1;
     const Eigen::Vector2f normals[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
@@ -204,6 +251,7 @@ struct Renderer::Impl {
         for (int x = 0; x < vw; ++x)
           vertical_light[k].at<float>(y, x) = verticalLightExact(
               Eigen::Vector3f(x / kVerticalTpm, y / kVerticalTpm, 1.0f), normals[k]);
+      vertical_grid[k] = FloatGrid(vertical_light[k]);
     }
     paint_mask_w = static_cast<int>(std::ceil(g.size.x() * 2.0)) + 1;
     paint_mask_h = static_cast<int>(std::ceil(g.size.y() * 2.0)) + 1;
@@ -224,8 +272,8 @@ struct Renderer::Impl {
     }
     grid_w = static_cast<int>(std::ceil(g.size.x())) + 1;
     grid_h = static_cast<int>(std::ceil(g.size.y())) + 1;
-    decal_grid.resize(static_cast<size_t>(grid_w) * grid_h);
-    lamp_grid.resize(decal_grid.size());
+    std::vector<std::vector<int>> decals_per_cell(static_cast<size_t>(grid_w) * grid_h),
+        lamps_per_cell(decals_per_cell.size());
     for (size_t i = 0; i < L.floor_decals.size(); ++i) {
       const Decal& d = L.floor_decals[i];
       const float pad = d.pad / d.texels_per_metre;
@@ -236,11 +284,31 @@ struct Renderer::Impl {
           lo = lo.cwiseMin(p.head<2>());
           hi = hi.cwiseMax(p.head<2>());
         }
-      addToGrid(decal_grid, lo, hi, static_cast<int>(i));
+      addToGrid(decals_per_cell, lo, hi, static_cast<int>(i));
     }
     for (size_t i = 0; i < L.lamps.size(); ++i) {
       const Lamp& l = L.lamps[i];
-      addToGrid(lamp_grid, l.center - l.half_size, l.center + l.half_size, static_cast<int>(i));
+      addToGrid(lamps_per_cell, l.center - l.half_size, l.center + l.half_size,
+                static_cast<int>(i));
+    }
+    paint = MipTexturePair(L.paint_white, L.paint_yellow);
+    decal_grid.build(decals_per_cell);
+    lamp_grid.build(lamps_per_cell);
+    for (size_t ci = 0; ci < rig.cameras.size(); ++ci) {
+      const CameraRays& cr = rays->at(ci);
+      const Eigen::Matrix3f vehicle_from_camera =
+          rig.cameras[ci].vehicle_from_camera.linear().cast<float>();
+      std::vector<VehicleRay> vr(cr.rays.size());
+      for (size_t i = 0; i < vr.size(); ++i) {
+        const Eigen::Vector3f& rc = cr.rays[i];
+        if (rc.isZero()) {
+          vr[i] = {0.0f, 0.0f, 0.0f, 0.0f};
+          continue;
+        }
+        const Eigen::Vector3f rv = vehicle_from_camera * rc;
+        vr[i] = {rv.x(), rv.y(), rv.z(), std::max(1e-4f, cr.pixel_angle[i])};
+      }
+      vehicle_rays.push_back(std::move(vr));
     }
     gamma_lut.resize(kLutSize);
     for (int i = 0; i < kLutSize; ++i) {
@@ -262,10 +330,10 @@ struct Renderer::Impl {
       for (int x = x0; x <= x1; ++x) grid[static_cast<size_t>(y) * grid_w + x].push_back(index);
   }
 
-  const std::vector<int>& cell(const std::vector<std::vector<int>>& grid, float x, float y) const {
+  size_t cellIndex(float x, float y) const {
     const int ix = std::clamp(static_cast<int>(x), 0, grid_w - 1);
     const int iy = std::clamp(static_cast<int>(y), 0, grid_h - 1);
-    return grid[static_cast<size_t>(iy) * grid_w + ix];
+    return static_cast<size_t>(iy) * grid_w + ix;
   }
 
   // Coverage of decal d at point p (0 outside); footprint in metres.
@@ -296,14 +364,13 @@ struct Renderer::Impl {
       if (facing <= 0.0f) continue;
       e += light.lamp_power * facing * dz / (d2 * d2);
     }
-    return e + 0.15f * bilinearF(floor_light, p.x() * light_tpm, p.y() * light_tpm);
+    return e + 0.15f * floor_light_grid.at(p.x() * light_tpm, p.y() * light_tpm);
   }
   // The precomputed maps above, for axis-aligned faces; a little brighter near the ceiling.
   float verticalLight(const Eigen::Vector3f& p, const Eigen::Vector3f& n) const {
     const int k = n.x() > 0.5f ? 0 : n.x() < -0.5f ? 1 : n.y() > 0.5f ? 2 : 3;
     const float h = std::clamp(p.z() / static_cast<float>(g.ceiling_height), 0.0f, 1.0f);
-    return bilinearF(vertical_light[k], p.x() * kVerticalTpm, p.y() * kVerticalTpm) *
-           (0.8f + 0.5f * h * h);
+    return vertical_grid[k].at(p.x() * kVerticalTpm, p.y() * kVerticalTpm) * (0.8f + 0.5f * h * h);
   }
   // A parked car's lower box (cars stand along y): wheels on the sides, a dark sill and
   // underbody, lamps at the ends.
@@ -337,16 +404,14 @@ struct Renderer::Impl {
     return paint_mask[static_cast<size_t>(my) * paint_mask_w + mx] != 0;
   }
 
-  cv::Mat renderCamera(size_t ci, const geometry::Pose2& pose, uint64_t seed) const {
-    const geometry::RigCamera& cam = rig.cameras.at(ci);
-    const CameraRays& cr = (*rays).at(ci);
-    const geometry::Rigid3 map_from_camera = pose.toRigid3() * cam.vehicle_from_camera;
-    const Eigen::Matrix3f R = map_from_camera.linear().cast<float>();
+  // Boxes that may cover each 16x16 tile of camera ci's image, as flat lists per tile.
+  CellLists cullBoxes(size_t ci, const geometry::Rigid3& map_from_camera) const {
+    const geometry::RigCamera& cam = rig.cameras[ci];
+    const CameraRays& cr = (*rays)[ci];
     const Eigen::Vector3f o = map_from_camera.translation().cast<float>();
     const geometry::Rigid3 camera_from_map = map_from_camera.inverse();
     const int W = cr.width, Hh = cr.height;
     const int tiles_x = (W + kTile - 1) / kTile, tiles_y = (Hh + kTile - 1) / kTile;
-
     // Box culling: the tiles each box may cover, from projected points on its edges.
     std::vector<std::vector<int>> tiles(static_cast<size_t>(tiles_x) * tiles_y);
     for (size_t bi = 0; bi < L.boxes.size(); ++bi) {
@@ -394,148 +459,206 @@ struct Renderer::Impl {
         for (int tx = tx0; tx <= tx1; ++tx)
           tiles[static_cast<size_t>(ty) * tiles_x + tx].push_back(static_cast<int>(bi));
     }
+    CellLists lists;
+    lists.build(tiles);
+    return lists;
+  }
+
+  // Shading of a box face hit at p (ray d, axis of the face hit_axis).
+  Eigen::Vector3f boxAlbedo(const Box& b, const Eigen::Vector3f& p, const Eigen::Vector3f& d,
+                            const Eigen::Vector3f& n, float footprint) const {
+    const float ctpm = static_cast<float>(g.concrete_texels_per_metre);
+    Eigen::Vector3f albedo = b.albedo;
+    if (b.material == Material::kPillar) {
+      // Painted foot band and concrete grain.
+      const float c = g.concrete.sampleNearestLevel(p.x() * ctpm + p.z() * 37.0f,
+                                                    p.y() * ctpm + p.z() * ctpm, footprint * ctpm);
+      albedo *= 0.6f + 0.7f * c;
+      if (p.z() < 0.35f)
+        albedo = (static_cast<int>((p.x() + p.y() + p.z()) * 4.0f) & 1)
+                     ? Eigen::Vector3f(0.8f, 0.65f, 0.05f)
+                     : Eigen::Vector3f(0.06f, 0.06f, 0.06f);
+    } else if (b.material == Material::kCarBody) {
+      albedo = carBodyAlbedo(b, p, n);
+    } else if (b.material == Material::kCarGlass && n.z() == 0.0f) {
+      albedo = Eigen::Vector3f(0.05f, 0.06f, 0.07f) +
+               0.15f * Eigen::Vector3f(0.5f, 0.5f, 0.5f) * std::abs(d.z());
+    }
+    for (int k = 0; k < b.decal_count; ++k) {
+      const Decal& dc = L.box_decals[b.first_decal + k];
+      const Eigen::Vector3f dn = dc.axis_u.cross(dc.axis_v);
+      if (std::abs((p - dc.origin).dot(dn)) > 2e-3f) continue;
+      const float a =
+          decalCoverage(dc, p, footprint / std::max(0.2f, std::abs(d.dot(n)))) * dc.opacity;
+      if (a > 0.0f) albedo += a * (dc.color - albedo);
+    }
+    return albedo;
+  }
+
+  // What the ray of one pixel hit: the output of a row's tracing pass, the input of its
+  // shading passes. Tracing a whole row first lets the texture lookups of many pixels be
+  // in flight at once (they miss the cache far more often than the arithmetic costs).
+  enum class Surface : uint8_t { kNone, kFloor, kCeiling, kWall, kBox };
+  struct PixelHit {
+    Eigen::Vector3f p, d;
+    float footprint;  // metres; on the floor already divided by the slant
+    int box;
+    Surface surface;
+    uint8_t axis;  // the axis of the face's normal (walls and boxes)
+  };
+  struct RowBuffers {
+    std::vector<PixelHit> hits;
+    std::vector<int> floor_pixels;
+    std::vector<Eigen::Vector3f> albedo;
+    std::vector<float> irradiance;
+    std::vector<float> noise;  // three values per pixel
+    explicit RowBuffers(int width)
+        : hits(static_cast<size_t>(width)),
+          floor_pixels(static_cast<size_t>(width)),
+          albedo(static_cast<size_t>(width)),
+          irradiance(static_cast<size_t>(width)),
+          noise(3 * static_cast<size_t>(width)) {}
+  };
+
+  cv::Mat renderCamera(size_t ci, const geometry::Pose2& pose, uint64_t seed) const {
+    const geometry::RigCamera& cam = rig.cameras.at(ci);
+    const CameraRays& cr = (*rays).at(ci);
+    const std::vector<VehicleRay>& vrays = vehicle_rays.at(ci);
+    const geometry::Rigid3 map_from_camera = pose.toRigid3() * cam.vehicle_from_camera;
+    const Eigen::Vector3f o = map_from_camera.translation().cast<float>();
+    const float cos_yaw = static_cast<float>(std::cos(pose.yaw));
+    const float sin_yaw = static_cast<float>(std::sin(pose.yaw));
+    const int W = cr.width, Hh = cr.height;
+    const int tiles_x = (W + kTile - 1) / kTile;
+    const CellLists tiles = cullBoxes(ci, map_from_camera);
+    // Box corners relative to the camera centre, for the slab tests.
+    struct RelativeBox {
+      float lo[3], hi[3];
+    };
+    std::vector<RelativeBox> rel(L.boxes.size());
+    for (size_t bi = 0; bi < L.boxes.size(); ++bi)
+      for (int a = 0; a < 3; ++a) {
+        rel[bi].lo[a] = L.boxes[bi].lo[a] - o[a];
+        rel[bi].hi[a] = L.boxes[bi].hi[a] - o[a];
+      }
 
     cv::Mat img(Hh, W, CV_8UC3);
-    const float X1 = static_cast<float>(g.size.x()), Y1 = static_cast<float>(g.size.y());
-    const float Hc = static_cast<float>(g.ceiling_height);
-    const float exposure = light.exposure;
-    const float lut_scale = (kLutSize - 1) / kLutMax;
-    const float ctpm = static_cast<float>(g.concrete_texels_per_metre);
-    const float ptpm = static_cast<float>(g.paint_texels_per_metre);
-    const float stpm = static_cast<float>(g.shade_texels_per_metre);
+    // Signed distances from the camera centre to the walls, floor and ceiling per axis.
+    const float wall_x[2] = {0.0f - o.x(), static_cast<float>(g.size.x()) - o.x()};
+    const float wall_y[2] = {0.0f - o.y(), static_cast<float>(g.size.y()) - o.y()};
+    const float wall_z[2] = {0.0f - o.z(), static_cast<float>(g.ceiling_height) - o.z()};
+    const float exposure_scale = light.exposure * (kLutSize - 1) / kLutMax;
 
-    cv::parallel_for_(cv::Range(0, Hh), [&](const cv::Range& range) {
-      for (int y = range.start; y < range.end; ++y) {
-        XorShift noise(seed ^ (static_cast<uint64_t>(ci) << 40) ^ (static_cast<uint64_t>(y) << 20));
-        uint8_t* out = img.ptr<uint8_t>(y);
-        for (int x = 0; x < W; ++x) {
-          const size_t i = static_cast<size_t>(y) * W + x;
-          const Eigen::Vector3f& rc = cr.rays[i];
-          if (rc.z() == 0.0f && rc.x() == 0.0f && rc.y() == 0.0f) {
-            out[3 * x] = out[3 * x + 1] = out[3 * x + 2] = 0;
-            continue;
-          }
-          const Eigen::Vector3f d = R * rc;
-          const Eigen::Vector3f inv(1.0f / d.x(), 1.0f / d.y(), 1.0f / d.z());
-          // Interior of the level: leave through floor, ceiling or a wall.
-          const float tx = d.x() > 0 ? (X1 - o.x()) * inv.x() : (0.0f - o.x()) * inv.x();
-          const float ty = d.y() > 0 ? (Y1 - o.y()) * inv.y() : (0.0f - o.y()) * inv.y();
-          const float tz = d.z() > 0 ? (Hc - o.z()) * inv.z() : (0.0f - o.z()) * inv.z();
-          float t = tx;
-          int surface = 0;  // 0 wall x, 1 wall y, 2 floor/ceiling
-          if (ty < t) t = ty, surface = 1;
-          if (tz < t) t = tz, surface = 2;
-          int hit_box = -1, hit_axis = 0;
-          for (const int bi : tiles[static_cast<size_t>(y / kTile) * tiles_x + x / kTile]) {
-            const Box& b = L.boxes[bi];
-            const float ax0 = (b.lo.x() - o.x()) * inv.x(), ax1 = (b.hi.x() - o.x()) * inv.x();
-            const float ay0 = (b.lo.y() - o.y()) * inv.y(), ay1 = (b.hi.y() - o.y()) * inv.y();
-            const float az0 = (b.lo.z() - o.z()) * inv.z(), az1 = (b.hi.z() - o.z()) * inv.z();
-            const float nx = std::min(ax0, ax1), ny = std::min(ay0, ay1), nz = std::min(az0, az1);
-            const float tnear = std::max(nx, std::max(ny, nz));
-            const float tfar =
-                std::min(std::max(ax0, ax1), std::min(std::max(ay0, ay1), std::max(az0, az1)));
-            if (tnear <= tfar && tnear > 1e-4f && tnear < t) {
-              t = tnear;
-              hit_box = bi;
-              hit_axis = tnear == nx ? 0 : (tnear == ny ? 1 : 2);
-            }
-          }
-          if (!(t > 0.0f && t < 1e4f)) {  // camera outside the level: nothing to see
-            out[3 * x] = out[3 * x + 1] = out[3 * x + 2] = 0;
-            continue;
-          }
-          const Eigen::Vector3f p = o + t * d;
-          const float footprint = t * cr.pixel_angle[i];
-          Eigen::Vector3f albedo;
-          float e;
-          if (hit_box >= 0) {
-            const Box& b = L.boxes[hit_box];
-            Eigen::Vector3f n = Eigen::Vector3f::Zero();
-            n[hit_axis] = d[hit_axis] > 0 ? -1.0f : 1.0f;
-            albedo = b.albedo;
-            if (b.material == Material::kPillar) {
-              // Painted foot band and concrete grain.
-              const float c = g.concrete.sampleNearestLevel(
-                  p.x() * ctpm + p.z() * 37.0f, p.y() * ctpm + p.z() * ctpm, footprint * ctpm);
-              albedo *= 0.6f + 0.7f * c;
-              if (p.z() < 0.35f)
-                albedo = (static_cast<int>((p.x() + p.y() + p.z()) * 4.0f) & 1)
-                             ? Eigen::Vector3f(0.8f, 0.65f, 0.05f)
-                             : Eigen::Vector3f(0.06f, 0.06f, 0.06f);
-            } else if (b.material == Material::kCarBody) {
-              albedo = carBodyAlbedo(b, p, n);
-            } else if (b.material == Material::kCarGlass && n.z() == 0.0f) {
-              albedo = Eigen::Vector3f(0.05f, 0.06f, 0.07f) +
-                       0.15f * Eigen::Vector3f(0.5f, 0.5f, 0.5f) * std::abs(d.z());
-            }
-            for (int k = 0; k < b.decal_count; ++k) {
-              const Decal& dc = L.box_decals[b.first_decal + k];
-              const Eigen::Vector3f dn = dc.axis_u.cross(dc.axis_v);
-              if (std::abs((p - dc.origin).dot(dn)) > 2e-3f) continue;
-              const float a =
-                  decalCoverage(dc, p, footprint / std::max(0.2f, std::abs(d.dot(n)))) * dc.opacity;
-              if (a > 0.0f) albedo += a * (dc.color - albedo);
-            }
-            e = n.z() > 0.5f ? bilinearF(floor_light, p.x() * light_tpm, p.y() * light_tpm) * 0.9f
-                             : (n.z() < -0.5f ? 0.3f * light.ambient : verticalLight(p, n));
-          } else if (surface == 2 && d.z() < 0) {
-            // Floor: concrete x shade, painted lines, text decals.
-            const float slant = std::sqrt(std::max(0.02f, -d.z()));
-            const float fp = footprint / slant;
-            const float c = g.concrete.sampleNearestLevel(p.x() * ctpm, p.y() * ctpm, fp * ctpm);
-            const float shade = bilinearF(L.floor_shade, p.x() * stpm - 0.5f, p.y() * stpm - 0.5f);
-            albedo = g.floor_albedo * (shade * (0.45f + 0.95f * c));
-            if (paintNear(p.x(), p.y())) {
-              const float wpaint =
-                  L.paint_white.sample(p.x() * ptpm - 0.5f, p.y() * ptpm - 0.5f, fp * ptpm);
-              if (wpaint > 0.002f)
-                albedo += wpaint * 0.95f * (Eigen::Vector3f(0.86f, 0.86f, 0.84f) - albedo);
-              const float ypaint =
-                  L.paint_yellow.sample(p.x() * ptpm - 0.5f, p.y() * ptpm - 0.5f, fp * ptpm);
-              if (ypaint > 0.002f)
-                albedo += ypaint * 0.95f * (Eigen::Vector3f(0.88f, 0.7f, 0.1f) - albedo);
-            }
-            for (const int di : cell(decal_grid, p.x(), p.y())) {
-              const Decal& dc = L.floor_decals[di];
-              const float a = decalCoverage(dc, p, fp) * dc.opacity;
-              if (a > 0.0f) albedo += a * (dc.color - albedo);
-            }
-            e = bilinearF(floor_light, p.x() * light_tpm, p.y() * light_tpm);
-          } else if (surface == 2) {
-            // Ceiling with its lamps.
-            albedo = Eigen::Vector3f(0.55f, 0.55f, 0.53f);
-            e = bilinearF(ceiling_light, p.x() * light_tpm, p.y() * light_tpm);
-            for (const int li : cell(lamp_grid, p.x(), p.y())) {
-              const Lamp& l = L.lamps[li];
-              if (std::abs(p.x() - l.center.x()) <= l.half_size.x() &&
-                  std::abs(p.y() - l.center.y()) <= l.half_size.y()) {
-                albedo = Eigen::Vector3f(1.0f, 1.0f, 0.97f);
-                e = lamp_is_on[li] ? 2.5f : 0.25f;
+    // Stripes of 8 rows: few enough to reuse the row buffers, enough to balance the threads.
+    const int stripes = std::max(1, Hh / 8);
+    cv::parallel_for_(
+        cv::Range(0, Hh),
+        [&](const cv::Range& range) {
+          RowBuffers buf(W);
+          const RelativeBox* boxes = rel.data();
+          const float* lut = gamma_lut.data();
+          const float sigma = light.noise_sigma;
+          for (int y = range.start; y < range.end; ++y) {
+            const VehicleRay* row_rays = vrays.data() + static_cast<size_t>(y) * W;
+            const size_t tile_row = static_cast<size_t>(y / kTile) * tiles_x;
+            PixelHit* hits = buf.hits.data();
+            int floor_count = 0;
+            // Sensor noise, drawn in pixel order from a generator seeded per row so rows can
+            // run in any order. Drawn while tracing: the generator's serial chain then overlaps
+            // with the tracing arithmetic.
+            XorShift noise(seed ^ (static_cast<uint64_t>(ci) << 40) ^
+                           (static_cast<uint64_t>(y) << 20));
+            float* row_noise = buf.noise.data();
+            // Pass 1: trace every pixel's ray.
+            for (int x = 0; x < W; ++x) {
+              PixelHit& h = hits[x];
+              const VehicleRay& r = row_rays[x];
+              h.surface = Surface::kNone;
+              if (r.angle == 0.0f) continue;
+              const Eigen::Vector3f d(cos_yaw * r.x - sin_yaw * r.y, sin_yaw * r.x + cos_yaw * r.y,
+                                      r.z);
+              const float ix = 1.0f / d.x(), iy = 1.0f / d.y(), iz = 1.0f / d.z();
+              // Interior of the level: leave through floor, ceiling or a wall.
+              const float tx = wall_x[d.x() > 0] * ix;
+              const float ty = wall_y[d.y() > 0] * iy;
+              const float tz = wall_z[d.z() > 0] * iz;
+              float t = tx;
+              int surface = 0;  // 0 wall x, 1 wall y, 2 floor/ceiling
+              if (ty < t) t = ty, surface = 1;
+              if (tz < t) t = tz, surface = 2;
+              int hit_box = -1, hit_axis = 0;
+              const size_t tile = tile_row + static_cast<size_t>(x / kTile);
+              for (const int* bi = tiles.begin(tile); bi != tiles.end(tile); ++bi) {
+                const RelativeBox& b = boxes[*bi];
+                const float ax0 = b.lo[0] * ix, ax1 = b.hi[0] * ix;
+                const float ay0 = b.lo[1] * iy, ay1 = b.hi[1] * iy;
+                const float az0 = b.lo[2] * iz, az1 = b.hi[2] * iz;
+                const float nx = std::min(ax0, ax1), ny = std::min(ay0, ay1),
+                            nz = std::min(az0, az1);
+                const float tnear = std::max(nx, std::max(ny, nz));
+                const float tfar =
+                    std::min(std::max(ax0, ax1), std::min(std::max(ay0, ay1), std::max(az0, az1)));
+                if (tnear <= tfar && tnear > 1e-4f && tnear < t) {
+                  t = tnear;
+                  hit_box = *bi;
+                  hit_axis = tnear == nx ? 0 : (tnear == ny ? 1 : 2);
+                }
+              }
+              if (!(t > 0.0f && t < 1e4f)) continue;  // camera outside the level: black
+              noise.gauss3(row_noise + 3 * x);
+              h.p = o + t * d;
+              h.d = d;
+              h.footprint = t * r.angle;
+              h.box = hit_box;
+              if (hit_box >= 0) {
+                h.surface = Surface::kBox;
+                h.axis = static_cast<uint8_t>(hit_axis);
+              } else if (surface == 2 && d.z() < 0) {
+                h.surface = Surface::kFloor;
+                h.footprint /= std::sqrt(std::max(0.02f, -d.z()));  // slant
+                buf.floor_pixels[static_cast<size_t>(floor_count++)] = x;
+              } else if (surface == 2) {
+                h.surface = Surface::kCeiling;
+              } else {
+                h.surface = Surface::kWall;
+                h.axis = static_cast<uint8_t>(surface);
               }
             }
-          } else {
-            // Walls: paint with a coloured band at the bottom.
-            Eigen::Vector3f n = Eigen::Vector3f::Zero();
-            n[surface] = d[surface] > 0 ? -1.0f : 1.0f;
-            const float c = g.concrete.sampleNearestLevel((p.x() + p.y()) * ctpm, p.z() * ctpm,
-                                                          footprint * ctpm);
-            albedo = (p.z() < g.wall_band_height ? g.wall_band : g.wall_albedo) * (0.8f + 0.4f * c);
-            e = verticalLight(p, n);
+            // Pass 2: the floor's concrete, shade and light, the lookups of every pixel
+            // independent of the others.
+            shadeFloorBase(hits, buf.floor_pixels.data(), floor_count, buf.albedo.data(),
+                           buf.irradiance.data());
+            // Pass 3: paint and text on the floor, then every other surface.
+            shadeFloorMarkings(hits, buf.floor_pixels.data(), floor_count, buf.albedo.data());
+            for (int x = 0; x < W; ++x) {
+              const PixelHit& h = hits[x];
+              if (h.surface == Surface::kNone || h.surface == Surface::kFloor) continue;
+              shadeOther(h, buf.albedo[static_cast<size_t>(x)],
+                         buf.irradiance[static_cast<size_t>(x)]);
+            }
+            // Pass 4: exposure, vignetting, tone curve and sensor noise.
+            uint8_t* out = img.ptr<uint8_t>(y);
+            const float* row_vignette = cr.vignette.data() + static_cast<size_t>(y) * W;
+            const Eigen::Vector3f* albedo = buf.albedo.data();
+            const float* irradiance = buf.irradiance.data();
+            for (int x = 0; x < W; ++x) {
+              if (hits[x].surface == Surface::kNone) {
+                out[3 * x] = out[3 * x + 1] = out[3 * x + 2] = 0;
+                continue;
+              }
+              const float scale = irradiance[x] * exposure_scale * row_vignette[x];
+              const float* n3 = row_noise + 3 * x;
+              for (int ch = 0; ch < 3; ++ch) {
+                // BGR output.
+                const int idx = std::min(kLutSize - 1, static_cast<int>(albedo[x][2 - ch] * scale));
+                // saturate_cast without its branches (lamps clip, noise straddles the limits).
+                const int v = cvRound(lut[std::max(0, idx)] + sigma * n3[ch]);
+                out[3 * x + ch] = static_cast<uint8_t>(std::min(255, std::max(0, v)));
+              }
+            }
           }
-          const float scale = e * exposure * cr.vignette[i] * lut_scale;
-          const float sigma = light.noise_sigma;
-          float n3[3];
-          noise.gauss3(n3);
-          for (int ch = 0; ch < 3; ++ch) {
-            // BGR output.
-            const int idx = std::min(kLutSize - 1, static_cast<int>(albedo[2 - ch] * scale));
-            out[3 * x + ch] =
-                cv::saturate_cast<uint8_t>(gamma_lut[std::max(0, idx)] + sigma * n3[ch]);
-          }
-        }
-      }
-    });
+        },
+        stripes);
 
     if (light.defocus_sigma > 0.0f) cv::GaussianBlur(img, img, cv::Size(0, 0), light.defocus_sigma);
     if (light.motion_blur_px > 1.0f) {
@@ -546,6 +669,93 @@ struct Renderer::Impl {
       if (len > 1) cv::blur(img, img, cv::Size(len, 1));
     }
     return img;
+  }
+
+  // Floor albedo without markings (concrete x shade) and irradiance of the listed pixels.
+  // One lookup per loop: short iterations let the out-of-order core overlap many of them.
+  void shadeFloorBase(const PixelHit* hits, const int* pixels, int count, Eigen::Vector3f* albedo,
+                      float* irradiance) const {
+    const float ctpm = static_cast<float>(g.concrete_texels_per_metre);
+    const float stpm = static_cast<float>(g.shade_texels_per_metre);
+    const Eigen::Vector3f floor_albedo = g.floor_albedo;
+    for (int k = 0; k < count; ++k) {
+      const int x = pixels[k];
+      const Eigen::Vector3f& p = hits[x].p;
+      irradiance[x] =
+          g.concrete.sampleNearestLevel(p.x() * ctpm, p.y() * ctpm, hits[x].footprint * ctpm);
+    }
+    for (int k = 0; k < count; ++k) {
+      const int x = pixels[k];
+      const Eigen::Vector3f& p = hits[x].p;
+      const float c = irradiance[x];
+      const float shade = floor_shade_grid.at(p.x() * stpm - 0.5f, p.y() * stpm - 0.5f);
+      albedo[x] = floor_albedo * (shade * (0.45f + 0.95f * c));
+    }
+    for (int k = 0; k < count; ++k) {
+      const int x = pixels[k];
+      const Eigen::Vector3f& p = hits[x].p;
+      irradiance[x] = floor_light_grid.at(p.x() * light_tpm, p.y() * light_tpm);
+    }
+  }
+
+  // Painted lines and text decals over the floor albedo of the listed pixels.
+  void shadeFloorMarkings(const PixelHit* hits, const int* pixels, int count,
+                          Eigen::Vector3f* albedo) const {
+    const float ptpm = static_cast<float>(g.paint_texels_per_metre);
+    for (int k = 0; k < count; ++k) {
+      const int x = pixels[k];
+      const Eigen::Vector3f& p = hits[x].p;
+      const float fp = hits[x].footprint;
+      Eigen::Vector3f a = albedo[x];
+      if (paintNear(p.x(), p.y())) {
+        float wpaint, ypaint;
+        paint.sample(p.x() * ptpm - 0.5f, p.y() * ptpm - 0.5f, fp * ptpm, wpaint, ypaint);
+        if (wpaint > 0.002f) a += wpaint * 0.95f * (Eigen::Vector3f(0.86f, 0.86f, 0.84f) - a);
+        if (ypaint > 0.002f) a += ypaint * 0.95f * (Eigen::Vector3f(0.88f, 0.7f, 0.1f) - a);
+      }
+      const size_t cell = cellIndex(p.x(), p.y());
+      for (const int* di = decal_grid.begin(cell); di != decal_grid.end(cell); ++di) {
+        const Decal& dc = L.floor_decals[*di];
+        const float coverage = decalCoverage(dc, p, fp) * dc.opacity;
+        if (coverage > 0.0f) a += coverage * (dc.color - a);
+      }
+      albedo[x] = a;
+    }
+  }
+
+  // Albedo and irradiance of a pixel on a box, the ceiling or a wall.
+  void shadeOther(const PixelHit& h, Eigen::Vector3f& albedo, float& e) const {
+    const Eigen::Vector3f& p = h.p;
+    const Eigen::Vector3f& d = h.d;
+    if (h.surface == Surface::kBox) {
+      Eigen::Vector3f n = Eigen::Vector3f::Zero();
+      n[h.axis] = d[h.axis] > 0 ? -1.0f : 1.0f;
+      albedo = boxAlbedo(L.boxes[static_cast<size_t>(h.box)], p, d, n, h.footprint);
+      e = n.z() > 0.5f ? floor_light_grid.at(p.x() * light_tpm, p.y() * light_tpm) * 0.9f
+                       : (n.z() < -0.5f ? 0.3f * light.ambient : verticalLight(p, n));
+    } else if (h.surface == Surface::kCeiling) {
+      // Ceiling with its lamps.
+      albedo = Eigen::Vector3f(0.55f, 0.55f, 0.53f);
+      e = ceiling_light_grid.at(p.x() * light_tpm, p.y() * light_tpm);
+      const size_t cell = cellIndex(p.x(), p.y());
+      for (const int* li = lamp_grid.begin(cell); li != lamp_grid.end(cell); ++li) {
+        const Lamp& l = L.lamps[static_cast<size_t>(*li)];
+        if (std::abs(p.x() - l.center.x()) <= l.half_size.x() &&
+            std::abs(p.y() - l.center.y()) <= l.half_size.y()) {
+          albedo = Eigen::Vector3f(1.0f, 1.0f, 0.97f);
+          e = lamp_is_on[static_cast<size_t>(*li)] ? 2.5f : 0.25f;
+        }
+      }
+    } else {
+      // Walls: paint with a coloured band at the bottom.
+      const float ctpm = static_cast<float>(g.concrete_texels_per_metre);
+      Eigen::Vector3f n = Eigen::Vector3f::Zero();
+      n[h.axis] = d[h.axis] > 0 ? -1.0f : 1.0f;
+      const float c =
+          g.concrete.sampleNearestLevel((p.x() + p.y()) * ctpm, p.z() * ctpm, h.footprint * ctpm);
+      albedo = (p.z() < g.wall_band_height ? g.wall_band : g.wall_albedo) * (0.8f + 0.4f * c);
+      e = verticalLight(p, n);
+    }
   }
 };
 

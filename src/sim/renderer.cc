@@ -8,11 +8,15 @@
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <random>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace parkloc::sim {
 namespace {
 
 constexpr int kTile = 16;
+constexpr int kChunk = 256;  // pixels; a multiple of kTile
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // A CV_32F map viewed for bilinear lookups, with what every lookup needs at hand (cv::Mat
@@ -63,6 +67,17 @@ struct CellLists {
   const int* end(size_t c) const { return items.data() + start[c + 1]; }
 };
 
+#if defined(__SSE2__)
+// Lane-wise mask ? a : b.
+inline __m128 select(__m128 mask, __m128 a, __m128 b) {
+  return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
+}
+inline __m128i selectInt(__m128 mask, __m128i a, __m128i b) {
+  const __m128i m = _mm_castps_si128(mask);
+  return _mm_or_si128(_mm_and_si128(m, a), _mm_andnot_si128(m, b));
+}
+#endif
+
 // Small fast generator for sensor noise, seeded per row so rows can run in any order.
 struct XorShift {
   uint64_t s;
@@ -79,9 +94,10 @@ struct XorShift {
   void gauss3(float out[3]) {
     const uint32_t a = next(), b = next(), c = next();
     const float k = 2.4494897f / 65536.0f;
-    out[0] = (static_cast<float>(a & 0xffff) + static_cast<float>(a >> 16) - 65535.0f) * k;
-    out[1] = (static_cast<float>(b & 0xffff) + static_cast<float>(b >> 16) - 65535.0f) * k;
-    out[2] = (static_cast<float>(c & 0xffff) + static_cast<float>(c >> 16) - 65535.0f) * k;
+    // The sums are exact in int as in float (below 2^17): one conversion each.
+    out[0] = static_cast<float>(static_cast<int>((a & 0xffff) + (a >> 16)) - 65535) * k;
+    out[1] = static_cast<float>(static_cast<int>((b & 0xffff) + (b >> 16)) - 65535) * k;
+    out[2] = static_cast<float>(static_cast<int>((c & 0xffff) + (c >> 16)) - 65535) * k;
   }
 };
 
@@ -188,6 +204,7 @@ struct Renderer::Impl {
   // Cells (0.5 m) with any white / yellow paint nearby: floor pixels elsewhere skip the lookup.
   std::vector<uint8_t> paint_mask;
   MipTexturePair paint;  // white and yellow
+  std::vector<Eigen::Vector3f> box_decal_normals;
   int paint_mask_w = 0, paint_mask_h = 0;
   // Floor irradiance (10 texels per metre) and ceiling brightness.
   cv::Mat floor_light, ceiling_light;
@@ -292,6 +309,7 @@ struct Renderer::Impl {
                 static_cast<int>(i));
     }
     paint = MipTexturePair(L.paint_white, L.paint_yellow);
+    for (const Decal& d : L.box_decals) box_decal_normals.push_back(d.axis_u.cross(d.axis_v));
     decal_grid.build(decals_per_cell);
     lamp_grid.build(lamps_per_cell);
     for (size_t ci = 0; ci < rig.cameras.size(); ++ci) {
@@ -486,7 +504,7 @@ struct Renderer::Impl {
     }
     for (int k = 0; k < b.decal_count; ++k) {
       const Decal& dc = L.box_decals[b.first_decal + k];
-      const Eigen::Vector3f dn = dc.axis_u.cross(dc.axis_v);
+      const Eigen::Vector3f& dn = box_decal_normals[b.first_decal + k];
       if (std::abs((p - dc.origin).dot(dn)) > 2e-3f) continue;
       const float a =
           decalCoverage(dc, p, footprint / std::max(0.2f, std::abs(d.dot(n)))) * dc.opacity;
@@ -548,6 +566,12 @@ struct Renderer::Impl {
     const float wall_y[2] = {0.0f - o.y(), static_cast<float>(g.size.y()) - o.y()};
     const float wall_z[2] = {0.0f - o.z(), static_cast<float>(g.ceiling_height) - o.z()};
     const float exposure_scale = light.exposure * (kLutSize - 1) / kLutMax;
+#if defined(__SSE2__)
+    const __m128 v_cos = _mm_set1_ps(cos_yaw), v_sin = _mm_set1_ps(sin_yaw);
+    const __m128 v_wall_x0 = _mm_set1_ps(wall_x[0]), v_wall_x1 = _mm_set1_ps(wall_x[1]);
+    const __m128 v_wall_y0 = _mm_set1_ps(wall_y[0]), v_wall_y1 = _mm_set1_ps(wall_y[1]);
+    const __m128 v_wall_z0 = _mm_set1_ps(wall_z[0]), v_wall_z1 = _mm_set1_ps(wall_z[1]);
+#endif
 
     // Stripes of 8 rows: few enough to reuse the row buffers, enough to balance the threads.
     const int stripes = std::max(1, Hh / 8);
@@ -562,98 +586,182 @@ struct Renderer::Impl {
             const VehicleRay* row_rays = vrays.data() + static_cast<size_t>(y) * W;
             const size_t tile_row = static_cast<size_t>(y / kTile) * tiles_x;
             PixelHit* hits = buf.hits.data();
-            int floor_count = 0;
             // Sensor noise, drawn in pixel order from a generator seeded per row so rows can
             // run in any order. Drawn while tracing: the generator's serial chain then overlaps
             // with the tracing arithmetic.
             XorShift noise(seed ^ (static_cast<uint64_t>(ci) << 40) ^
                            (static_cast<uint64_t>(y) << 20));
             float* row_noise = buf.noise.data();
-            // Pass 1: trace every pixel's ray.
-            for (int x = 0; x < W; ++x) {
-              PixelHit& h = hits[x];
-              const VehicleRay& r = row_rays[x];
-              h.surface = Surface::kNone;
-              if (r.angle == 0.0f) continue;
-              const Eigen::Vector3f d(cos_yaw * r.x - sin_yaw * r.y, sin_yaw * r.x + cos_yaw * r.y,
-                                      r.z);
-              const float ix = 1.0f / d.x(), iy = 1.0f / d.y(), iz = 1.0f / d.z();
-              // Interior of the level: leave through floor, ceiling or a wall.
-              const float tx = wall_x[d.x() > 0] * ix;
-              const float ty = wall_y[d.y() > 0] * iy;
-              const float tz = wall_z[d.z() > 0] * iz;
-              float t = tx;
-              int surface = 0;  // 0 wall x, 1 wall y, 2 floor/ceiling
-              if (ty < t) t = ty, surface = 1;
-              if (tz < t) t = tz, surface = 2;
-              int hit_box = -1, hit_axis = 0;
-              const size_t tile = tile_row + static_cast<size_t>(x / kTile);
-              for (const int* bi = tiles.begin(tile); bi != tiles.end(tile); ++bi) {
-                const RelativeBox& b = boxes[*bi];
-                const float ax0 = b.lo[0] * ix, ax1 = b.hi[0] * ix;
-                const float ay0 = b.lo[1] * iy, ay1 = b.hi[1] * iy;
-                const float az0 = b.lo[2] * iz, az1 = b.hi[2] * iz;
-                const float nx = std::min(ax0, ax1), ny = std::min(ay0, ay1),
-                            nz = std::min(az0, az1);
-                const float tnear = std::max(nx, std::max(ny, nz));
-                const float tfar =
-                    std::min(std::max(ax0, ax1), std::min(std::max(ay0, ay1), std::max(az0, az1)));
-                if (tnear <= tfar && tnear > 1e-4f && tnear < t) {
-                  t = tnear;
-                  hit_box = *bi;
-                  hit_axis = tnear == nx ? 0 : (tnear == ny ? 1 : 2);
-                }
-              }
-              if (!(t > 0.0f && t < 1e4f)) continue;  // camera outside the level: black
-              noise.gauss3(row_noise + 3 * x);
-              h.p = o + t * d;
-              h.d = d;
-              h.footprint = t * r.angle;
-              h.box = hit_box;
-              if (hit_box >= 0) {
-                h.surface = Surface::kBox;
-                h.axis = static_cast<uint8_t>(hit_axis);
-              } else if (surface == 2 && d.z() < 0) {
-                h.surface = Surface::kFloor;
-                h.footprint /= std::sqrt(std::max(0.02f, -d.z()));  // slant
-                buf.floor_pixels[static_cast<size_t>(floor_count++)] = x;
-              } else if (surface == 2) {
-                h.surface = Surface::kCeiling;
-              } else {
-                h.surface = Surface::kWall;
-                h.axis = static_cast<uint8_t>(surface);
-              }
-            }
-            // Pass 2: the floor's concrete, shade and light, the lookups of every pixel
-            // independent of the others.
-            shadeFloorBase(hits, buf.floor_pixels.data(), floor_count, buf.albedo.data(),
-                           buf.irradiance.data());
-            // Pass 3: paint and text on the floor, then every other surface.
-            shadeFloorMarkings(hits, buf.floor_pixels.data(), floor_count, buf.albedo.data());
-            for (int x = 0; x < W; ++x) {
-              const PixelHit& h = hits[x];
-              if (h.surface == Surface::kNone || h.surface == Surface::kFloor) continue;
-              shadeOther(h, buf.albedo[static_cast<size_t>(x)],
-                         buf.irradiance[static_cast<size_t>(x)]);
-            }
-            // Pass 4: exposure, vignetting, tone curve and sensor noise.
             uint8_t* out = img.ptr<uint8_t>(y);
             const float* row_vignette = cr.vignette.data() + static_cast<size_t>(y) * W;
-            const Eigen::Vector3f* albedo = buf.albedo.data();
-            const float* irradiance = buf.irradiance.data();
-            for (int x = 0; x < W; ++x) {
-              if (hits[x].surface == Surface::kNone) {
-                out[3 * x] = out[3 * x + 1] = out[3 * x + 2] = 0;
-                continue;
+            // The passes run over chunks of the row small enough for their buffers to stay
+            // in the L1 cache; chunks go left to right, so the noise keeps its order.
+            for (int chunk = 0; chunk < W; chunk += kChunk) {
+              const int chunk_end = std::min(W, chunk + kChunk);
+              int floor_count = 0;
+              // Pass 1: trace every pixel's ray. record() keeps what a ray hit and draws its
+              // noise, in pixel order.
+              const auto record = [&](int x, const Eigen::Vector3f& d, float t, int surface,
+                                      int hit_box, int hit_axis, float angle) {
+                PixelHit& h = hits[x];
+                if (!(t > 0.0f && t < 1e4f)) return;  // camera outside the level: black
+                noise.gauss3(row_noise + 3 * x);
+                h.p = o + t * d;
+                h.d = d;
+                h.footprint = t * angle;
+                h.box = hit_box;
+                if (hit_box >= 0) {
+                  h.surface = Surface::kBox;
+                  h.axis = static_cast<uint8_t>(hit_axis);
+                } else if (surface == 2 && d.z() < 0) {
+                  h.surface = Surface::kFloor;
+                  h.footprint /= std::sqrt(std::max(0.02f, -d.z()));  // slant
+                  buf.floor_pixels[static_cast<size_t>(floor_count++)] = x;
+                } else if (surface == 2) {
+                  h.surface = Surface::kCeiling;
+                } else {
+                  h.surface = Surface::kWall;
+                  h.axis = static_cast<uint8_t>(surface);
+                }
+              };
+              int x = chunk;
+#if defined(__SSE2__)
+              // Four pixels at a time; they share a 16x16 tile, so one list of boxes. Every
+              // operation is the scalar loop's below, lane by lane (std::min(a, b) is
+              // _mm_min_ps(b, a)), so both give the same bits.
+              for (; x + 4 <= chunk_end; x += 4) {
+                __m128 rx = _mm_loadu_ps(&row_rays[x].x), ry = _mm_loadu_ps(&row_rays[x + 1].x);
+                __m128 rz = _mm_loadu_ps(&row_rays[x + 2].x), ra = _mm_loadu_ps(&row_rays[x + 3].x);
+                _MM_TRANSPOSE4_PS(rx, ry, rz, ra);
+                const __m128 dx = _mm_sub_ps(_mm_mul_ps(v_cos, rx), _mm_mul_ps(v_sin, ry));
+                const __m128 dy = _mm_add_ps(_mm_mul_ps(v_sin, rx), _mm_mul_ps(v_cos, ry));
+                const __m128 dz = rz;
+                const __m128 one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps();
+                const __m128 ix = _mm_div_ps(one, dx), iy = _mm_div_ps(one, dy),
+                             iz = _mm_div_ps(one, dz);
+                const __m128 tx =
+                    _mm_mul_ps(select(_mm_cmpgt_ps(dx, zero), v_wall_x1, v_wall_x0), ix);
+                const __m128 ty =
+                    _mm_mul_ps(select(_mm_cmpgt_ps(dy, zero), v_wall_y1, v_wall_y0), iy);
+                const __m128 tz =
+                    _mm_mul_ps(select(_mm_cmpgt_ps(dz, zero), v_wall_z1, v_wall_z0), iz);
+                __m128 t = tx;
+                __m128i surface = _mm_setzero_si128();
+                __m128 closer = _mm_cmplt_ps(ty, t);
+                t = select(closer, ty, t);
+                surface = selectInt(closer, _mm_set1_epi32(1), surface);
+                closer = _mm_cmplt_ps(tz, t);
+                t = select(closer, tz, t);
+                surface = selectInt(closer, _mm_set1_epi32(2), surface);
+                __m128i hit_box = _mm_set1_epi32(-1), hit_axis = _mm_setzero_si128();
+                const size_t tile = tile_row + static_cast<size_t>(x / kTile);
+                for (const int* bi = tiles.begin(tile); bi != tiles.end(tile); ++bi) {
+                  const RelativeBox& b = boxes[*bi];
+                  const __m128 ax0 = _mm_mul_ps(_mm_set1_ps(b.lo[0]), ix);
+                  const __m128 ax1 = _mm_mul_ps(_mm_set1_ps(b.hi[0]), ix);
+                  const __m128 ay0 = _mm_mul_ps(_mm_set1_ps(b.lo[1]), iy);
+                  const __m128 ay1 = _mm_mul_ps(_mm_set1_ps(b.hi[1]), iy);
+                  const __m128 az0 = _mm_mul_ps(_mm_set1_ps(b.lo[2]), iz);
+                  const __m128 az1 = _mm_mul_ps(_mm_set1_ps(b.hi[2]), iz);
+                  const __m128 nx = _mm_min_ps(ax1, ax0), ny = _mm_min_ps(ay1, ay0),
+                               nz = _mm_min_ps(az1, az0);
+                  const __m128 tnear = _mm_max_ps(_mm_max_ps(nz, ny), nx);
+                  const __m128 tfar = _mm_min_ps(
+                      _mm_min_ps(_mm_max_ps(az1, az0), _mm_max_ps(ay1, ay0)), _mm_max_ps(ax1, ax0));
+                  const __m128 hit = _mm_and_ps(_mm_and_ps(_mm_cmple_ps(tnear, tfar),
+                                                           _mm_cmpgt_ps(tnear, _mm_set1_ps(1e-4f))),
+                                                _mm_cmplt_ps(tnear, t));
+                  if (_mm_movemask_ps(hit) == 0) continue;
+                  t = select(hit, tnear, t);
+                  hit_box = selectInt(hit, _mm_set1_epi32(*bi), hit_box);
+                  const __m128i axis = selectInt(
+                      _mm_cmpeq_ps(tnear, nx), _mm_setzero_si128(),
+                      selectInt(_mm_cmpeq_ps(tnear, ny), _mm_set1_epi32(1), _mm_set1_epi32(2)));
+                  hit_axis = selectInt(hit, axis, hit_axis);
+                }
+                alignas(16) float lane_t[4], lane_dx[4], lane_dy[4], lane_dz[4], lane_angle[4];
+                alignas(16) int lane_surface[4], lane_box[4], lane_axis[4];
+                _mm_store_ps(lane_t, t);
+                _mm_store_ps(lane_dx, dx);
+                _mm_store_ps(lane_dy, dy);
+                _mm_store_ps(lane_dz, dz);
+                _mm_store_ps(lane_angle, ra);
+                _mm_store_si128(reinterpret_cast<__m128i*>(lane_surface), surface);
+                _mm_store_si128(reinterpret_cast<__m128i*>(lane_box), hit_box);
+                _mm_store_si128(reinterpret_cast<__m128i*>(lane_axis), hit_axis);
+                for (int l = 0; l < 4; ++l) {
+                  hits[x + l].surface = Surface::kNone;
+                  if (lane_angle[l] == 0.0f) continue;
+                  record(x + l, Eigen::Vector3f(lane_dx[l], lane_dy[l], lane_dz[l]), lane_t[l],
+                         lane_surface[l], lane_box[l], lane_axis[l], lane_angle[l]);
+                }
               }
-              const float scale = irradiance[x] * exposure_scale * row_vignette[x];
-              const float* n3 = row_noise + 3 * x;
-              for (int ch = 0; ch < 3; ++ch) {
-                // BGR output.
-                const int idx = std::min(kLutSize - 1, static_cast<int>(albedo[x][2 - ch] * scale));
-                // saturate_cast without its branches (lamps clip, noise straddles the limits).
-                const int v = cvRound(lut[std::max(0, idx)] + sigma * n3[ch]);
-                out[3 * x + ch] = static_cast<uint8_t>(std::min(255, std::max(0, v)));
+#endif
+              for (; x < chunk_end; ++x) {
+                const VehicleRay& r = row_rays[x];
+                hits[x].surface = Surface::kNone;
+                if (r.angle == 0.0f) continue;
+                const Eigen::Vector3f d(cos_yaw * r.x - sin_yaw * r.y,
+                                        sin_yaw * r.x + cos_yaw * r.y, r.z);
+                const float ix = 1.0f / d.x(), iy = 1.0f / d.y(), iz = 1.0f / d.z();
+                // Interior of the level: leave through floor, ceiling or a wall.
+                const float tx = wall_x[d.x() > 0] * ix;
+                const float ty = wall_y[d.y() > 0] * iy;
+                const float tz = wall_z[d.z() > 0] * iz;
+                float t = tx;
+                int surface = 0;  // 0 wall x, 1 wall y, 2 floor/ceiling
+                if (ty < t) t = ty, surface = 1;
+                if (tz < t) t = tz, surface = 2;
+                int hit_box = -1, hit_axis = 0;
+                const size_t tile = tile_row + static_cast<size_t>(x / kTile);
+                for (const int* bi = tiles.begin(tile); bi != tiles.end(tile); ++bi) {
+                  const RelativeBox& b = boxes[*bi];
+                  const float ax0 = b.lo[0] * ix, ax1 = b.hi[0] * ix;
+                  const float ay0 = b.lo[1] * iy, ay1 = b.hi[1] * iy;
+                  const float az0 = b.lo[2] * iz, az1 = b.hi[2] * iz;
+                  const float nx = std::min(ax0, ax1), ny = std::min(ay0, ay1),
+                              nz = std::min(az0, az1);
+                  const float tnear = std::max(nx, std::max(ny, nz));
+                  const float tfar = std::min(std::max(ax0, ax1),
+                                              std::min(std::max(ay0, ay1), std::max(az0, az1)));
+                  if (tnear <= tfar && tnear > 1e-4f && tnear < t) {
+                    t = tnear;
+                    hit_box = *bi;
+                    hit_axis = tnear == nx ? 0 : (tnear == ny ? 1 : 2);
+                  }
+                }
+                record(x, d, t, surface, hit_box, hit_axis, r.angle);
+              }
+              // Pass 2: the floor's concrete, shade and light, the lookups of every pixel
+              // independent of the others.
+              shadeFloorBase(hits, buf.floor_pixels.data(), floor_count, buf.albedo.data(),
+                             buf.irradiance.data());
+              // Pass 3: paint and text on the floor, then every other surface.
+              shadeFloorMarkings(hits, buf.floor_pixels.data(), floor_count, buf.albedo.data());
+              for (int x = chunk; x < chunk_end; ++x) {
+                const PixelHit& h = hits[x];
+                if (h.surface == Surface::kNone || h.surface == Surface::kFloor) continue;
+                shadeOther(h, buf.albedo[static_cast<size_t>(x)],
+                           buf.irradiance[static_cast<size_t>(x)]);
+              }
+              // Pass 4: exposure, vignetting, tone curve and sensor noise.
+              const Eigen::Vector3f* albedo = buf.albedo.data();
+              const float* irradiance = buf.irradiance.data();
+              for (int x = chunk; x < chunk_end; ++x) {
+                if (hits[x].surface == Surface::kNone) {
+                  out[3 * x] = out[3 * x + 1] = out[3 * x + 2] = 0;
+                  continue;
+                }
+                const float scale = irradiance[x] * exposure_scale * row_vignette[x];
+                const float* n3 = row_noise + 3 * x;
+                for (int ch = 0; ch < 3; ++ch) {
+                  // BGR output.
+                  const int idx =
+                      std::min(kLutSize - 1, static_cast<int>(albedo[x][2 - ch] * scale));
+                  // saturate_cast without its branches (lamps clip, noise straddles the limits).
+                  const int v = cvRound(lut[std::max(0, idx)] + sigma * n3[ch]);
+                  out[3 * x + ch] = static_cast<uint8_t>(std::min(255, std::max(0, v)));
+                }
               }
             }
           }

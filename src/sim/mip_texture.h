@@ -7,6 +7,9 @@
 #include <cstring>
 #include <opencv2/core.hpp>
 #include <vector>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace parkloc::sim {
 
@@ -59,17 +62,50 @@ class MipTexture {
   }
   // Bilinear at a single level (the nearest one), cheaper for large low-contrast textures.
   float sampleNearestLevel(float u, float v, float footprint) const {
-    const int last = static_cast<int>(levels_.size()) - 1;
-    // floor(log2(footprint) + 0.5) is the binary exponent of footprint * sqrt(2).
-    int level = 0;
-    if (footprint > 1.0f) {
-      const float scaled = footprint * 1.41421356f;
-      uint32_t bits;
-      std::memcpy(&bits, &scaled, sizeof bits);
-      level = static_cast<int>(bits >> 23) - 127;  // positive finite: the sign bit is 0
-    }
-    return bilinear(std::min(level, last), u, v);
+    return bilinear(nearestLevel(footprint), u, v);
   }
+#if defined(__SSE2__)
+  // sampleNearestLevel() at four points, the same operations lane by lane, when the four
+  // pick one level of a tiling power-of-two texture; otherwise false and `out` untouched.
+  bool sampleNearestLevel4(__m128 u, __m128 v, __m128 footprint, __m128& out) const {
+    if (!wrap_) return false;
+    alignas(16) float fp[4];
+    _mm_store_ps(fp, footprint);
+    const int level = nearestLevel(fp[0]);
+    if (nearestLevel(fp[1]) != level || nearestLevel(fp[2]) != level ||
+        nearestLevel(fp[3]) != level)
+      return false;
+    const Level& m = levels_[level];
+    if (!m.pow2) return false;
+    const __m128 scale = _mm_set1_ps(m.scale), half = _mm_set1_ps(0.5f);
+    const __m128 x = _mm_sub_ps(_mm_mul_ps(_mm_add_ps(u, half), scale), half);
+    const __m128 y = _mm_sub_ps(_mm_mul_ps(_mm_add_ps(v, half), scale), half);
+    const __m128i x0 = floorInt4(x), y0 = floorInt4(y);
+    const __m128 ax = _mm_sub_ps(x, _mm_cvtepi32_ps(x0)), ay = _mm_sub_ps(y, _mm_cvtepi32_ps(y0));
+    const __m128i one = _mm_set1_epi32(1);
+    const __m128i wmask = _mm_set1_epi32(m.width - 1), hmask = _mm_set1_epi32(m.height - 1);
+    alignas(16) int ix0[4], ix1[4], iy0[4], iy1[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(ix0), _mm_and_si128(x0, wmask));
+    _mm_store_si128(reinterpret_cast<__m128i*>(ix1), _mm_and_si128(_mm_add_epi32(x0, one), wmask));
+    _mm_store_si128(reinterpret_cast<__m128i*>(iy0), _mm_and_si128(y0, hmask));
+    _mm_store_si128(reinterpret_cast<__m128i*>(iy1), _mm_and_si128(_mm_add_epi32(y0, one), hmask));
+    alignas(16) float a[4], b[4], c[4], d[4];
+    for (int l = 0; l < 4; ++l) {
+      const uint8_t* r0 = m.texels.data + static_cast<size_t>(iy0[l]) * m.width;
+      const uint8_t* r1 = m.texels.data + static_cast<size_t>(iy1[l]) * m.width;
+      a[l] = r0[ix0[l]];
+      b[l] = r0[ix1[l]];
+      c[l] = r1[ix0[l]];
+      d[l] = r1[ix1[l]];
+    }
+    const __m128 va = _mm_load_ps(a), vc = _mm_load_ps(c);
+    const __m128 top = _mm_add_ps(va, _mm_mul_ps(ax, _mm_sub_ps(_mm_load_ps(b), va)));
+    const __m128 bottom = _mm_add_ps(vc, _mm_mul_ps(ax, _mm_sub_ps(_mm_load_ps(d), vc)));
+    out = _mm_mul_ps(_mm_add_ps(top, _mm_mul_ps(ay, _mm_sub_ps(bottom, top))),
+                     _mm_set1_ps(1.0f / 255.0f));
+    return true;
+  }
+#endif
 
  private:
   struct Level {
@@ -83,6 +119,25 @@ class MipTexture {
   static int floorInt(float x) {
     const int i = static_cast<int>(x);
     return i - (static_cast<float>(i) > x ? 1 : 0);
+  }
+#if defined(__SSE2__)
+  static __m128i floorInt4(__m128 x) {
+    const __m128i i = _mm_cvttps_epi32(x);
+    // The comparison mask is -1 where truncation rounded up.
+    return _mm_add_epi32(i, _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(i), x)));
+  }
+#endif
+  // The level sampleNearestLevel() reads: floor(log2(footprint) + 0.5), the binary exponent
+  // of footprint * sqrt(2).
+  int nearestLevel(float footprint) const {
+    int level = 0;
+    if (footprint > 1.0f) {
+      const float scaled = footprint * 1.41421356f;
+      uint32_t bits;
+      std::memcpy(&bits, &scaled, sizeof bits);
+      level = static_cast<int>(bits >> 23) - 127;  // positive finite: the sign bit is 0
+    }
+    return std::min(level, static_cast<int>(levels_.size()) - 1);
   }
 
   float bilinear(int level, float u, float v) const {

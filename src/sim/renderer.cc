@@ -49,6 +49,34 @@ struct FloatGrid {
     const float bottom = r1[x0] + ax * (r1[x1] - r1[x0]);
     return top + ay * (bottom - top);
   }
+#if defined(__SSE2__)
+  // at() for four points, the same operations lane by lane (std::min(a, b) is
+  // _mm_min_ps(b, a)); needs vectorizable() to hold.
+  bool vectorizable() const { return cols >= 2 && rows >= 2 && cols <= 8192 && rows <= 8192; }
+  __m128 at4(__m128 x, __m128 y) const {
+    const __m128 zero = _mm_setzero_ps();
+    x = _mm_and_ps(_mm_cmpge_ps(x, zero), _mm_min_ps(_mm_set1_ps(xmax), x));
+    y = _mm_and_ps(_mm_cmpge_ps(y, zero), _mm_min_ps(_mm_set1_ps(ymax), y));
+    const __m128i x0 = _mm_cvttps_epi32(x), y0 = _mm_cvttps_epi32(y);
+    const __m128 ax = _mm_sub_ps(x, _mm_cvtepi32_ps(x0)), ay = _mm_sub_ps(y, _mm_cvtepi32_ps(y0));
+    alignas(16) int ix[4], iy[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(ix), x0);
+    _mm_store_si128(reinterpret_cast<__m128i*>(iy), y0);
+    // Inside the clamped range x0 + 1 < cols and y0 + 1 < rows (sizes below 8192).
+    alignas(16) float a[4], b[4], c[4], d[4];
+    for (int l = 0; l < 4; ++l) {
+      const float* r0 = data + stride * static_cast<size_t>(iy[l]) + ix[l];
+      a[l] = r0[0];
+      b[l] = r0[1];
+      c[l] = r0[stride];
+      d[l] = r0[stride + 1];
+    }
+    const __m128 va = _mm_load_ps(a), vc = _mm_load_ps(c);
+    const __m128 top = _mm_add_ps(va, _mm_mul_ps(ax, _mm_sub_ps(_mm_load_ps(b), va)));
+    const __m128 bottom = _mm_add_ps(vc, _mm_mul_ps(ax, _mm_sub_ps(_mm_load_ps(d), vc)));
+    return _mm_add_ps(top, _mm_mul_ps(ay, _mm_sub_ps(bottom, top)));
+  }
+#endif
 };
 
 // Index lists per cell of a grid, stored flat: the items of cell c are
@@ -779,29 +807,58 @@ struct Renderer::Impl {
     return img;
   }
 
-  // Floor albedo without markings (concrete x shade) and irradiance of the listed pixels.
-  // One lookup per loop: short iterations let the out-of-order core overlap many of them.
+  // Floor albedo without markings (concrete x shade) and irradiance of the listed pixels,
+  // four at a time where SSE2 is there (the same operations as the scalar loop).
   void shadeFloorBase(const PixelHit* hits, const int* pixels, int count, Eigen::Vector3f* albedo,
                       float* irradiance) const {
     const float ctpm = static_cast<float>(g.concrete_texels_per_metre);
     const float stpm = static_cast<float>(g.shade_texels_per_metre);
     const Eigen::Vector3f floor_albedo = g.floor_albedo;
-    for (int k = 0; k < count; ++k) {
-      const int x = pixels[k];
-      const Eigen::Vector3f& p = hits[x].p;
-      irradiance[x] =
-          g.concrete.sampleNearestLevel(p.x() * ctpm, p.y() * ctpm, hits[x].footprint * ctpm);
+    int k = 0;
+#if defined(__SSE2__)
+    if (floor_shade_grid.vectorizable() && floor_light_grid.vectorizable()) {
+      const __m128 v_ctpm = _mm_set1_ps(ctpm), v_stpm = _mm_set1_ps(stpm);
+      const __m128 v_ltpm = _mm_set1_ps(light_tpm), half = _mm_set1_ps(0.5f);
+      for (; k + 4 <= count; k += 4) {
+        const PixelHit* h[4] = {hits + pixels[k], hits + pixels[k + 1], hits + pixels[k + 2],
+                                hits + pixels[k + 3]};
+        const __m128 px = _mm_setr_ps(h[0]->p.x(), h[1]->p.x(), h[2]->p.x(), h[3]->p.x());
+        const __m128 py = _mm_setr_ps(h[0]->p.y(), h[1]->p.y(), h[2]->p.y(), h[3]->p.y());
+        __m128 c;
+        if (!g.concrete.sampleNearestLevel4(
+                _mm_mul_ps(px, v_ctpm), _mm_mul_ps(py, v_ctpm),
+                _mm_mul_ps(
+                    _mm_setr_ps(h[0]->footprint, h[1]->footprint, h[2]->footprint, h[3]->footprint),
+                    v_ctpm),
+                c)) {
+          alignas(16) float lanes[4];
+          for (int l = 0; l < 4; ++l)
+            lanes[l] = g.concrete.sampleNearestLevel(h[l]->p.x() * ctpm, h[l]->p.y() * ctpm,
+                                                     h[l]->footprint * ctpm);
+          c = _mm_load_ps(lanes);
+        }
+        const __m128 shade = floor_shade_grid.at4(_mm_sub_ps(_mm_mul_ps(px, v_stpm), half),
+                                                  _mm_sub_ps(_mm_mul_ps(py, v_stpm), half));
+        const __m128 factor =
+            _mm_mul_ps(shade, _mm_add_ps(_mm_set1_ps(0.45f), _mm_mul_ps(_mm_set1_ps(0.95f), c)));
+        alignas(16) float lane_factor[4], lane_light[4];
+        _mm_store_ps(lane_factor, factor);
+        _mm_store_ps(lane_light,
+                     floor_light_grid.at4(_mm_mul_ps(px, v_ltpm), _mm_mul_ps(py, v_ltpm)));
+        for (int l = 0; l < 4; ++l) {
+          albedo[pixels[k + l]] = floor_albedo * lane_factor[l];
+          irradiance[pixels[k + l]] = lane_light[l];
+        }
+      }
     }
-    for (int k = 0; k < count; ++k) {
+#endif
+    for (; k < count; ++k) {
       const int x = pixels[k];
       const Eigen::Vector3f& p = hits[x].p;
-      const float c = irradiance[x];
+      const float c =
+          g.concrete.sampleNearestLevel(p.x() * ctpm, p.y() * ctpm, hits[x].footprint * ctpm);
       const float shade = floor_shade_grid.at(p.x() * stpm - 0.5f, p.y() * stpm - 0.5f);
       albedo[x] = floor_albedo * (shade * (0.45f + 0.95f * c));
-    }
-    for (int k = 0; k < count; ++k) {
-      const int x = pixels[k];
-      const Eigen::Vector3f& p = hits[x].p;
       irradiance[x] = floor_light_grid.at(p.x() * light_tpm, p.y() * light_tpm);
     }
   }

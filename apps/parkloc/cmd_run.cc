@@ -21,7 +21,7 @@ struct RunArgs {
   bool oracle = false, paper = false;
   bool no_afm = false, no_mcrp = false, no_mcap = false, no_odometry = false;
   bool no_map_guided = false;
-  int full_frame_interval = 10;
+  int full_frame_interval = parkloc::localize::PipelineOptions{}.full_frame_interval;
   int reread_interval = parkloc::localize::PipelineOptions{}.reread_interval_frames;
   int max_reads = parkloc::localize::PipelineOptions{}.max_reads_per_frame;
   size_t max_frames = 0;

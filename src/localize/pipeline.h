@@ -64,8 +64,10 @@ struct PipelineOptions {
   bool use_odometry = true;  // EKF prediction from wheel odometry (else constant pose)
   bool map_guided = true;    // spot only where the map predicts text while tracking
   // Full-frame spotting every N frames while tracking (and every frame when lost or not
-  // initialised). 1 = always full frame.
-  int full_frame_interval = 10;
+  // initialised). 1 = always full frame. With the round robin, 4 camera images per 30
+  // frames (3 s at 10 Hz): 13 % of the frame sets sweep one camera, against 40 % with 10, at
+  // the same accuracy on the demo drive (0.59 against 0.61 cm mean).
+  int full_frame_interval = 30;
   // Class filter: which text classes may be associated with the map.
   bool use_parking_numbers = true;
   bool use_pillar_text = true;
@@ -157,8 +159,9 @@ struct PipelineOptions {
   int max_reads_per_frame = 2;         // <= 0: no limit
   double tracked_min_height_px = 8.0;  // flatter predicted text is not fitted
   // While tracking, the full-frame sweep's detector input is scaled by this (faster; it
-  // only has to catch what the prediction missed).
-  double sweep_detection_scale = 1.0;
+  // only has to catch what the prediction missed). 0.75 cut the sweep's CPU time from 222 to
+  // 172 ms median on the demo drive at the same accuracy.
+  double sweep_detection_scale = 0.75;
 
   // Optional known starting pose (e.g. from a previous session); otherwise the first
   // solver fix initialises.

@@ -87,6 +87,43 @@ TEST_F(PpOcrSpotterTest, ReadsFloorTextThroughTheFisheyeAndMatchesTheLexicon) {
   EXPECT_LT(maxCornerError(in_region[0].polygon, scene.truth), 3.0);
 }
 
+TEST_F(PpOcrSpotterTest, ReadsATrackedTextAtItsPredictionWithoutDetection) {
+  const auto rig = geometry::defaultRig();
+  const auto* left = rig.find("left");
+  ASSERT_NE(left, nullptr);
+  const auto scene = testing::renderFloorText(*left, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
+  RegionOfInterest region;
+  for (int k = 0; k < 4; ++k) {
+    region.predicted[k] = scene.truth[k] + cv::Point2f(4, -3);  // the map's prediction
+    region.polygon[k] = region.predicted[k];
+  }
+  region.expected_texts = {"B2-117"};
+  SpotRequest request;
+  request.regions = {region};
+  request.camera = left;
+  const auto found = spotter_->spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].text, "B2-117");
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_TRUE(found[0].read);
+  EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), 3.0);
+
+  // Another text expected there: the reading does not vouch for it, nothing is reported.
+  request.regions[0].expected_texts = {"B2-181"};
+  EXPECT_TRUE(spotter_->spot(scene.image, request).empty());
+
+  // Not to be read: only the ink is fitted, the expected text and class come back unread.
+  request.regions[0].expected_texts = {"B2-117"};
+  request.regions[0].read = false;
+  request.regions[0].expected_class = map::TextClass::kParkingNumber;
+  const auto fitted = spotter_->spot(scene.image, request);
+  ASSERT_EQ(fitted.size(), 1u);
+  EXPECT_FALSE(fitted[0].read);
+  EXPECT_EQ(fitted[0].text, "B2-117");
+  EXPECT_EQ(fitted[0].cls, map::TextClass::kParkingNumber);
+  EXPECT_LT(maxCornerError(fitted[0].polygon, scene.truth), 2.0);
+}
+
 TEST_F(PpOcrSpotterTest, RejectsEmptyAndWronglyTypedImages) {
   EXPECT_THROW(spotter_->spot(cv::Mat(), {}), InputError);
   EXPECT_THROW(spotter_->spot(cv::Mat(32, 32, CV_8UC1, cv::Scalar(0)), {}), InputError);

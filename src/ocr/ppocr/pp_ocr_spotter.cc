@@ -313,13 +313,21 @@ std::vector<TextInstance> PpOcrSpotter::spotRegions(const cv::Mat& image,
 
 std::vector<TextInstance> PpOcrSpotter::readRegions(const cv::Mat& image,
                                                     const SpotRequest& request) {
+  // A region with the text's own predicted polygon is read right there (the lexicon must
+  // vouch for it); the others are searched by the detector in a rectified patch.
+  auto predicted = [&](const RegionOfInterest& r) {
+    return options_.read_at_prediction && quadWidth(r.predicted) > 1.f &&
+           quadHeight(r.predicted) > 1.f;
+  };
   const cv::Size patch = options_.region_patch;
   const float aspect = float(patch.width) / patch.height;
   std::vector<cv::Mat> patches;
+  std::vector<size_t> patch_region;
   std::vector<cv::Mat> patch_from_image;
   std::vector<std::pair<float, float>> text_size_in_patch;  // predicted w, h in patch pixels
-  for (const auto& region : request.regions) {
-    const Quad& q = region.polygon;
+  for (size_t r = 0; r < request.regions.size(); ++r) {
+    if (predicted(request.regions[r])) continue;
+    const Quad& q = request.regions[r].polygon;
     const float w = std::max(quadWidth(q), 1.f), h = std::max(quadHeight(q), 1.f);
     // The expanded region keeps the patch's aspect ratio, so the text is not stretched.
     const float expanded_h =
@@ -330,19 +338,28 @@ std::vector<TextInstance> PpOcrSpotter::readRegions(const cv::Mat& image,
     cv::Mat p;
     cv::warpPerspective(image, p, H, patch, cv::INTER_LINEAR, cv::BORDER_CONSTANT);
     patches.push_back(p);
+    patch_region.push_back(r);
     patch_from_image.push_back(H);
     text_size_in_patch.emplace_back(w / expanded_w * patch.width, h / expanded_h * patch.height);
   }
-  const auto maps = nets_->detector.probability(patches);
+  const auto maps = patches.empty() ? std::vector<cv::Mat>{} : nets_->detector.probability(patches);
 
-  std::vector<ReadJob> jobs;
+  std::vector<ReadJob> jobs(request.regions.size());
   for (size_t r = 0; r < request.regions.size(); ++r) {
+    jobs[r].lexicon = &request.regions[r].expected_texts;
+    jobs[r].try_both_directions = false;  // the map predicts the reading direction
+    jobs[r].quad = predicted(request.regions[r])
+                       ? expandQuad(request.regions[r].predicted, options_.prediction_expand_x,
+                                    options_.prediction_expand_y)
+                       : request.regions[r].polygon;  // read the prediction itself; score 0
+  }
+  for (size_t k = 0; k < patches.size(); ++k) {
     // The detected box nearest the patch centre, where the map predicts the text.
     const cv::Point2f centre(patch.width * 0.5f, patch.height * 0.5f);
-    const auto [tw, th] = text_size_in_patch[r];
+    const auto [tw, th] = text_size_in_patch[k];
     std::optional<DbBox> chosen;
     float chosen_cost = 0.f;
-    for (const DbBox& box : dbBoxesFromProbability(maps[r], options_.db)) {
+    for (const DbBox& box : dbBoxesFromProbability(maps[k], options_.db)) {
       const cv::Point2f c = (box.quad[0] + box.quad[1] + box.quad[2] + box.quad[3]) * 0.25f;
       const float dx = (c.x - centre.x) / std::max(tw, 1.f),
                   dy = (c.y - centre.y) / std::max(th, 1.f);
@@ -353,16 +370,10 @@ std::vector<TextInstance> PpOcrSpotter::readRegions(const cv::Mat& image,
         chosen_cost = cost;
       }
     }
-    ReadJob job;
-    job.lexicon = &request.regions[r].expected_texts;
-    job.try_both_directions = false;  // the map predicts the reading direction
     if (chosen) {
-      job.quad = transformQuad(chosen->quad, patch_from_image[r].inv());
-      job.detection_score = chosen->score;
-    } else {
-      job.quad = request.regions[r].polygon;  // read the prediction itself; score 0
+      jobs[patch_region[k]].quad = transformQuad(chosen->quad, patch_from_image[k].inv());
+      jobs[patch_region[k]].detection_score = chosen->score;
     }
-    jobs.push_back(job);
   }
   auto read = readJobs(image, jobs, request.camera, options_, nets_->detector, nets_->recognizer,
                        nets_->direction ? &*nets_->direction : nullptr, nets_->charset);

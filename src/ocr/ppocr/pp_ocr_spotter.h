@@ -63,6 +63,12 @@ struct PpOcrOptions {
   float region_expand_x = 1.4f;
   float region_expand_y = 2.2f;
   cv::Size region_patch{256, 64};
+  // Regions with a predicted text polygon (RegionOfInterest::predicted) are read at the
+  // prediction grown by these factors, without detection (the map tracks them to a few
+  // pixels; the lexicon must match); false: every region goes through the detector.
+  bool read_at_prediction = true;
+  float prediction_expand_x = 1.1f;
+  float prediction_expand_y = 1.4f;
   // Regions with RegionOfInterest::read == false: corner fit only.
   TrackedFitOptions tracked_fit;
 };

@@ -97,10 +97,10 @@ struct CellLists {
 
 #if defined(__SSE2__)
 // Lane-wise mask ? a : b.
-inline __m128 select(__m128 mask, __m128 a, __m128 b) {
+inline __m128 laneSelect(__m128 mask, __m128 a, __m128 b) {
   return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
 }
-inline __m128i selectInt(__m128 mask, __m128i a, __m128i b) {
+inline __m128i laneSelectInt(__m128 mask, __m128i a, __m128i b) {
   const __m128i m = _mm_castps_si128(mask);
   return _mm_or_si128(_mm_and_si128(m, a), _mm_andnot_si128(m, b));
 }
@@ -541,9 +541,9 @@ struct Renderer::Impl {
     return albedo;
   }
 
-  // What the ray of one pixel hit: the output of a row's tracing pass, the input of its
-  // shading passes. Tracing a whole row first lets the texture lookups of many pixels be
-  // in flight at once (they miss the cache far more often than the arithmetic costs).
+  // What the ray of one pixel hit: the output of the tracing pass over a chunk of a row, the
+  // input of its shading passes. Grouping the work by kind keeps each loop short and lets
+  // the floor lookups (most pixels) run four at a time.
   enum class Surface : uint8_t { kNone, kFloor, kCeiling, kWall, kBox };
   struct PixelHit {
     Eigen::Vector3f p, d;
@@ -668,19 +668,19 @@ struct Renderer::Impl {
                 const __m128 ix = _mm_div_ps(one, dx), iy = _mm_div_ps(one, dy),
                              iz = _mm_div_ps(one, dz);
                 const __m128 tx =
-                    _mm_mul_ps(select(_mm_cmpgt_ps(dx, zero), v_wall_x1, v_wall_x0), ix);
+                    _mm_mul_ps(laneSelect(_mm_cmpgt_ps(dx, zero), v_wall_x1, v_wall_x0), ix);
                 const __m128 ty =
-                    _mm_mul_ps(select(_mm_cmpgt_ps(dy, zero), v_wall_y1, v_wall_y0), iy);
+                    _mm_mul_ps(laneSelect(_mm_cmpgt_ps(dy, zero), v_wall_y1, v_wall_y0), iy);
                 const __m128 tz =
-                    _mm_mul_ps(select(_mm_cmpgt_ps(dz, zero), v_wall_z1, v_wall_z0), iz);
+                    _mm_mul_ps(laneSelect(_mm_cmpgt_ps(dz, zero), v_wall_z1, v_wall_z0), iz);
                 __m128 t = tx;
                 __m128i surface = _mm_setzero_si128();
                 __m128 closer = _mm_cmplt_ps(ty, t);
-                t = select(closer, ty, t);
-                surface = selectInt(closer, _mm_set1_epi32(1), surface);
+                t = laneSelect(closer, ty, t);
+                surface = laneSelectInt(closer, _mm_set1_epi32(1), surface);
                 closer = _mm_cmplt_ps(tz, t);
-                t = select(closer, tz, t);
-                surface = selectInt(closer, _mm_set1_epi32(2), surface);
+                t = laneSelect(closer, tz, t);
+                surface = laneSelectInt(closer, _mm_set1_epi32(2), surface);
                 __m128i hit_box = _mm_set1_epi32(-1), hit_axis = _mm_setzero_si128();
                 const size_t tile = tile_row + static_cast<size_t>(x / kTile);
                 for (const int* bi = tiles.begin(tile); bi != tiles.end(tile); ++bi) {
@@ -700,12 +700,12 @@ struct Renderer::Impl {
                                                            _mm_cmpgt_ps(tnear, _mm_set1_ps(1e-4f))),
                                                 _mm_cmplt_ps(tnear, t));
                   if (_mm_movemask_ps(hit) == 0) continue;
-                  t = select(hit, tnear, t);
-                  hit_box = selectInt(hit, _mm_set1_epi32(*bi), hit_box);
-                  const __m128i axis = selectInt(
+                  t = laneSelect(hit, tnear, t);
+                  hit_box = laneSelectInt(hit, _mm_set1_epi32(*bi), hit_box);
+                  const __m128i axis = laneSelectInt(
                       _mm_cmpeq_ps(tnear, nx), _mm_setzero_si128(),
-                      selectInt(_mm_cmpeq_ps(tnear, ny), _mm_set1_epi32(1), _mm_set1_epi32(2)));
-                  hit_axis = selectInt(hit, axis, hit_axis);
+                      laneSelectInt(_mm_cmpeq_ps(tnear, ny), _mm_set1_epi32(1), _mm_set1_epi32(2)));
+                  hit_axis = laneSelectInt(hit, axis, hit_axis);
                 }
                 alignas(16) float lane_t[4], lane_dx[4], lane_dy[4], lane_dz[4], lane_angle[4];
                 alignas(16) int lane_surface[4], lane_box[4], lane_axis[4];

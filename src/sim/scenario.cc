@@ -145,12 +145,15 @@ NumberingScheme numberingSchemeFromString(const std::string& name) {
 
 std::string resolveFontPath(const std::string& font) {
   namespace fs = std::filesystem;
+  // The error_code overload: a name the file system cannot take (too long, say) is just a
+  // font that is not there (fuzz finding 13).
+  std::error_code ec;
   if (font.find('/') != std::string::npos) {
-    if (fs::exists(font)) return font;
+    if (fs::exists(font, ec)) return font;
   } else {
     for (const char* dir : kFontDirs) {
       const fs::path p = fs::path(dir) / font;
-      if (fs::exists(p)) return p.string();
+      if (fs::exists(p, ec)) return p.string();
     }
   }
   throw InputError("scenario: font '" + font + "' not found (looked in /usr/share/fonts/truetype)");

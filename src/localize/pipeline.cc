@@ -316,23 +316,23 @@ struct Pipeline::Impl {
       size_t camera, index;
       double size;
     };
+    // Whether `when` holds a frame index for `id` within the last reread_interval_frames.
+    const auto lately = [&](const std::map<std::string, int>& when, const std::string& id) {
+      const auto it = when.find(id);
+      return it != when.end() && frame_index - it->second < options.reread_interval_frames;
+    };
     std::vector<Unread> unread;
     std::vector<std::vector<bool>> keep(candidates.size());
     for (size_t c = 0; c < candidates.size(); ++c) {
       keep[c].assign(candidates[c].size(), false);
       for (size_t i = 0; i < candidates[c].size(); ++i) {
         RegionCandidate& r = candidates[c][i];
-        const auto read = last_read.find(r.landmark_id);
-        if (read != last_read.end() &&
-            frame_index - read->second < options.reread_interval_frames) {
+        if (lately(last_read, r.landmark_id)) {
           r.roi.read = false;
           keep[c][i] = r.height_px >= options.tracked_min_height_px;
-        } else {
-          // A region tried lately and not read (occluded, blurred) waits a while.
-          const auto tried = last_read_attempt.find(r.landmark_id);
-          const bool tried_lately = tried != last_read_attempt.end() &&
-                                    frame_index - tried->second < options.reread_interval_frames;
-          if (!tried_lately) unread.push_back({c, i, r.size_px});
+        } else if (!lately(last_read_attempt, r.landmark_id)) {
+          // (A region tried lately and not read, occluded or blurred, waits a while.)
+          unread.push_back({c, i, r.size_px});
         }
       }
     }
@@ -777,6 +777,9 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
       a.instance_index = static_cast<int>(i);
       a.text = instance.text;
       const int tag = static_cast<int>(result.associations.size());
+      // The numeric part of a parking number, for the box plot.
+      const std::optional<int> number = parkingNumberValue(instance.text);
+      const bool is_number = instance.cls == map::TextClass::kParkingNumber && number.has_value();
       const bool usable_class =
           (instance.cls == map::TextClass::kParkingNumber && options.use_parking_numbers) ||
           (instance.cls == map::TextClass::kPillar && options.use_pillar_text &&
@@ -785,9 +788,7 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
         a.verdict = AssociationVerdict::kWrongClass;
       } else if (instance.recognition_score < options.min_recognition_score) {
         a.verdict = AssociationVerdict::kLowScore;
-      } else if (const auto number = parkingNumberValue(instance.text);
-                 afm_filters_readings && instance.read &&
-                 instance.cls == map::TextClass::kParkingNumber && number && !afm.accept(*number)) {
+      } else if (afm_filters_readings && instance.read && is_number && !afm.accept(*number)) {
         a.verdict = AssociationVerdict::kAnomaly;
       } else {
         const auto candidates = map.findByText(instance.text, level);
@@ -852,9 +853,8 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
       // A text read and accepted needs no reading for a while; a fitted one that does
       // not fit the prediction is read again.
       if (!a.landmark_id.empty()) {
-        const auto number = parkingNumberValue(instance.text);
         if (a.verdict == AssociationVerdict::kAccepted && options.afm && !afm_filters_readings &&
-            instance.cls == map::TextClass::kParkingNumber && number)
+            is_number)
           afm.remember(*number);
         if (a.verdict == AssociationVerdict::kAccepted && instance.read)
           last_read[a.landmark_id] = frame_index - 1;

@@ -137,14 +137,7 @@ TEST(RegionBudget, PipelineKeepsTheBudgetSpreadsFullFramesAndRotatesCameras) {
   for (int k = 0; k < 40; ++k) {
     const double t = k / 10.0;
     spotter.pose = geometry::Pose2(2.0 * t, 0.1, 0.0);
-    FrameInput in;
-    in.timestamp = t;
-    for (const auto& camera : rig.cameras)
-      in.cameras.push_back({camera.name, cv::Mat(4, 4, CV_8UC3), {}});
-    io::OdometrySample odo;
-    odo.timestamp = t;
-    odo.speed = 2.0;
-    in.odometry.push_back(odo);
+    const FrameInput in = testing::placeholderFrame(rig, t, 2.0);
     const FrameResult r = pipeline.process(in);
     ASSERT_TRUE(r.has_pose) << "frame " << k;
     EXPECT_LT((r.pose.translation() - spotter.pose.translation()).norm(), 0.01) << "frame " << k;

@@ -11,6 +11,7 @@
 #include "geometry/rig.h"
 #include "localize/floor_heights.h"
 #include "localize/landmark_observation.h"
+#include "localize/pipeline.h"
 #include "map/hd_map.h"
 #include "ocr/text_spotter.h"
 
@@ -130,6 +131,20 @@ inline std::vector<LandmarkObservation> observeExactly(const geometry::Rig& rig,
     }
   }
   return out;
+}
+
+// A frame set at time t for a spotter that ignores the pixels: a small placeholder image per
+// rig camera and one odometry sample of the given speed (straight ahead).
+inline FrameInput placeholderFrame(const geometry::Rig& rig, double t, double speed) {
+  FrameInput in;
+  in.timestamp = t;
+  for (const auto& camera : rig.cameras)
+    in.cameras.push_back({camera.name, cv::Mat(4, 4, CV_8UC3), {}});
+  io::OdometrySample odo;
+  odo.timestamp = t;
+  odo.speed = speed;
+  in.odometry.push_back(odo);
+  return in;
 }
 
 }  // namespace parkloc::localize::testing

@@ -60,18 +60,13 @@ TEST(TrackedReading, ReadsAFewTextsPerFrameFitsTheRestAndKeepsThePose) {
     spotter.read_now.clear();
     spotter.fitted_now.clear();
     spotter.reads_asked = 0;
-    FrameInput in;
-    in.timestamp = t;
-    for (const auto& camera : rig.cameras)
-      in.cameras.push_back({camera.name, cv::Mat(4, 4, CV_8UC3), {}});
-    io::OdometrySample odo;
-    odo.timestamp = t;
-    odo.speed = 1.5;
-    in.odometry.push_back(odo);
+    const FrameInput in = testing::placeholderFrame(rig, t, 1.5);
     const FrameResult r = pipeline.process(in);
     ASSERT_TRUE(r.has_pose) << "frame " << k;
     EXPECT_LT((r.pose.translation() - spotter.pose.translation()).norm(), 0.01) << "frame " << k;
-    if (k > 0) EXPECT_LE(spotter.reads_asked, 2) << "frame " << k;
+    if (k > 0) {
+      EXPECT_LE(spotter.reads_asked, 2) << "frame " << k;
+    }
     // Only texts read within the interval are fitted.
     for (const auto& text : spotter.fitted_now) {
       ASSERT_TRUE(last_read.count(text)) << text << " fitted before it was read, frame " << k;
@@ -94,14 +89,7 @@ TEST(TrackedReading, OffReadsEveryRegion) {
   for (int k = 0; k < 10; ++k) {
     spotter.pose = geometry::Pose2(0.1 * k, 0.1, 0.0);
     spotter.fitted_now.clear();
-    FrameInput in;
-    in.timestamp = k / 10.0;
-    for (const auto& camera : rig.cameras)
-      in.cameras.push_back({camera.name, cv::Mat(4, 4, CV_8UC3), {}});
-    io::OdometrySample odo;
-    odo.timestamp = in.timestamp;
-    odo.speed = 1.0;
-    in.odometry.push_back(odo);
+    const FrameInput in = testing::placeholderFrame(rig, k / 10.0, 1.0);
     pipeline.process(in);
     EXPECT_TRUE(spotter.fitted_now.empty()) << "frame " << k;
   }

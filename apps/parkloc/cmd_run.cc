@@ -123,11 +123,11 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--reread-interval", args->reread_interval,
                   "Track texts read in the last N frames by fitting their ink, without reading "
                   "(0: read every region every frame)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0, 100000))
       ->capture_default_str();
   cmd->add_option("--max-reads", args->max_reads,
                   "Regions read per frame set while tracking (0: no limit)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0, 100000))
       ->capture_default_str();
   cmd->add_option("--max-frames", args->max_frames, "Process at most N frame sets (0: all)");
   cmd->add_flag("--quiet", args->quiet, "No progress line");

@@ -25,6 +25,9 @@ std::optional<InkMask> inkMask(const cv::Mat& image, const Quad& detected,
   cv::Mat crop, gray;
   cv::warpPerspective(image, crop, crop_from_image, {w, h}, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
   cv::cvtColor(crop, gray, cv::COLOR_BGR2GRAY);
+  const double crop_px_per_raw_px = h / std::max(quadHeight(quad), 1.f);
+  const double sigma = options.denoise_sigma_raw_px * crop_px_per_raw_px;
+  if (sigma >= 0.3) cv::GaussianBlur(gray, gray, {0, 0}, sigma);
   cv::Mat binary;
   const double threshold = cv::threshold(gray, binary, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
   // Polarity: the crop's border is background (DB's box leaves a margin around the text).
@@ -34,7 +37,7 @@ std::optional<InkMask> inkMask(const cv::Mat& image, const Quad& detected,
   if (border_mean > threshold) cv::bitwise_not(binary, binary);
   // Contrast check: ink and background means must differ clearly.
   const double ink_mean = cv::mean(gray, binary)[0], bg_mean = cv::mean(gray, ~binary)[0];
-  if (std::abs(ink_mean - bg_mean) < 20.0) return std::nullopt;
+  if (std::abs(ink_mean - bg_mean) < options.min_contrast) return std::nullopt;
 
   // Keep components that do not touch the crop's border (slot lines, neighbours), unless
   // that leaves nothing.

@@ -23,6 +23,12 @@ struct CornerRefinementOptions {
   float search_expand_y = 1.8f;
   double max_ground_height = 1.2;  // metres; taller text is not floor text
   double max_ground_width = 6.0;
+  // Dim text (weak light): the crop is smoothed by this many raw-image pixels (sensor
+  // noise is per raw pixel; the crop magnifies it) before it is thresholded, and ink and
+  // background need only differ by min_contrast grey levels. The fit's size and place
+  // checks, not a contrast floor, keep noise out.
+  double denoise_sigma_raw_px = 1.0;
+  double min_contrast = 8.0;
 };
 
 // Ink outline points (raw image pixels) of the text inside `quad`; empty when no clear ink

@@ -58,10 +58,12 @@ struct FisheyeScene {
 
 // White paint on grey concrete: text of `width` x `height` metres whose centre lies at
 // `centre` on the ground (vehicle frame) and that reads along `heading` (radians from the
-// vehicle's x axis), seen by `camera`.
+// vehicle's x axis), seen by `camera`. Concrete at 95 x brightness grey levels, paint
+// `ink_contrast` x brightness above it, sensor noise of 6 grey levels.
 inline FisheyeScene renderFloorText(const geometry::RigCamera& camera, const std::string& text,
                                     const Eigen::Vector2d& centre, double heading, double width,
-                                    double height, double brightness = 1.0) {
+                                    double height, double brightness = 1.0,
+                                    double ink_contrast = 140.0) {
   const auto& model = camera.model;
   const cv::Mat ink = renderInk(text, 160);
   const double ppm_x = ink.cols / width, ppm_y = ink.rows / height;
@@ -102,7 +104,7 @@ inline FisheyeScene renderFloorText(const geometry::RigCamera& camera, const std
   cv::RNG rng(12345);
   rng.fill(floor, cv::RNG::NORMAL, 0.0, 6.0);
   floor = floor + 95.0 * brightness;
-  cv::Mat gray = floor + a * 140.0;
+  cv::Mat gray = floor + a * ink_contrast;
   cv::Mat gray8;
   gray.convertTo(gray8, CV_8U);
   FisheyeScene scene;

@@ -24,6 +24,8 @@ struct RunArgs {
   int full_frame_interval = parkloc::localize::PipelineOptions{}.full_frame_interval;
   int reread_interval = parkloc::localize::PipelineOptions{}.reread_interval_frames;
   int max_reads = parkloc::localize::PipelineOptions{}.max_reads_per_frame;
+  double sweep_scale = parkloc::localize::PipelineOptions{}.sweep_detection_scale;
+  int search_cameras = parkloc::localize::PipelineOptions{}.search_cameras_per_frame;
   size_t max_frames = 0;
   bool quiet = false;
   std::vector<std::string> inject;
@@ -46,6 +48,8 @@ void run(const RunArgs& a) {
     options.pipeline.full_frame_interval = a.full_frame_interval;
     options.pipeline.reread_interval_frames = a.reread_interval;
     options.pipeline.max_reads_per_frame = a.max_reads;
+    options.pipeline.sweep_detection_scale = a.sweep_scale;
+    options.pipeline.search_cameras_per_frame = a.search_cameras;
   }
   // Parking numbers repeat on every level of a garage: the drive's level comes from
   // --level, else from the sequence's meta.json, else the pipeline votes.
@@ -128,6 +132,15 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--max-reads", args->max_reads,
                   "Regions read per frame set while tracking (0: no limit)")
       ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
+  cmd->add_option("--sweep-scale", args->sweep_scale,
+                  "While tracking, the full-frame sweep's detector input is scaled by this")
+      ->check(CLI::Range(0.25, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--search-cameras", args->search_cameras,
+                  "Cameras spotted on the full frame per frame set before the first fix and "
+                  "when lost, in turn (0: all)")
+      ->check(CLI::Range(0, 16))
       ->capture_default_str();
   cmd->add_option("--max-frames", args->max_frames, "Process at most N frame sets (0: all)");
   cmd->add_flag("--quiet", args->quiet, "No progress line");

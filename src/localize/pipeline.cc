@@ -147,6 +147,7 @@ struct Pipeline::Impl {
   int frame_index = 0;
   int tracking_frames = 0;
   size_t next_full_frame_camera = 0;
+  size_t next_search_camera = 0;
   std::map<std::string, int> last_asked;
   // Tracking: the frame index at which each landmark was last read and accepted.
   std::map<std::string, int> last_read;
@@ -208,6 +209,7 @@ struct Pipeline::Impl {
     frame_index = 0;
     tracking_frames = 0;
     next_full_frame_camera = 0;
+    next_search_camera = 0;
     last_asked.clear();
     last_read.clear();
     last_read_attempt.clear();
@@ -654,6 +656,16 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
       one_full_frame = true;
     }
   }
+  // Searching (no pose, or lost): the full frame of a few cameras per frame set, in turn.
+  const bool searching =
+      !options.paper_mode && options.map_guided && !is_tracking && interval > 1;
+  const int per_search = options.search_cameras_per_frame;
+  if (searching && per_search > 0 && static_cast<size_t>(per_search) < n_cameras) {
+    full_frame.assign(n_cameras, false);
+    for (int k = 0; k < per_search; ++k)
+      full_frame[(next_search_camera + static_cast<size_t>(k)) % n_cameras] = true;
+    next_search_camera = (next_search_camera + static_cast<size_t>(per_search)) % n_cameras;
+  }
   tracking_frames = is_tracking ? tracking_frames + 1 : 0;
   std::vector<const map::Landmark*> nearby;
   if (!all_full_frame)
@@ -735,6 +747,9 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
         if (is_tracking && options.reread_interval_frames > 0) {
           request.max_reads = std::max(0, options.max_reads_per_frame);
           request.detection_scale = static_cast<float>(options.sweep_detection_scale);
+        } else if (searching) {
+          request.max_reads = std::max(0, options.search_max_reads);
+          request.detection_scale = static_cast<float>(options.search_detection_scale);
         }
       }
       const auto t_spot = Clock::now();

@@ -107,6 +107,7 @@ class CountingSpotter : public ocr::TextSpotter {
   CountingSpotter(const geometry::Rig& rig, const map::HdMap& map) : rig_(rig), map_(map) {}
   std::string name() const override { return "counting"; }
   std::vector<ocr::TextInstance> spot(const cv::Mat&, const ocr::SpotRequest& request) override {
+    if (!only_camera.empty() && request.camera->name != only_camera) return {};
     auto all = testing::spotExactly(*request.camera, map_, pose, {});
     if (request.regions.empty()) return all;
     std::vector<ocr::TextInstance> out;
@@ -116,6 +117,7 @@ class CountingSpotter : public ocr::TextSpotter {
     return out;
   }
   geometry::Pose2 pose;
+  std::string only_camera;  // non-empty: every other camera sees nothing
 
  private:
   const geometry::Rig& rig_;
@@ -131,6 +133,7 @@ TEST(RegionBudget, PipelineKeepsTheBudgetSpreadsFullFramesAndRotatesCameras) {
   options.max_regions_with_full_frame = 1;
   options.full_frame_round_robin = true;
   options.full_frame_interval = 8;
+  options.search_cameras_per_frame = 0;  // the first frame spots every camera
   Pipeline pipeline(rig, map, options, &spotter);
   std::set<std::string> cameras_with_regions, cameras_on_full_frame;
   int tracked = 0;
@@ -160,6 +163,35 @@ TEST(RegionBudget, PipelineKeepsTheBudgetSpreadsFullFramesAndRotatesCameras) {
   EXPECT_EQ(tracked, 39);
   EXPECT_EQ(cameras_on_full_frame.size(), rig.cameras.size());  // each camera's turn came
   EXPECT_GE(cameras_with_regions.size(), 3u);  // regions went round the cameras that see text
+}
+
+TEST(RegionBudget, SearchSpotsOneCameraPerFrameInTurnUntilTheFirstFix) {
+  const geometry::Rig rig = geometry::defaultRig();
+  const map::HdMap map = testing::aisleMap();
+  CountingSpotter spotter(rig, map);
+  spotter.only_camera = "left";  // the only camera that sees text (the others are dark)
+  PipelineOptions options;
+  options.search_cameras_per_frame = 1;
+  Pipeline pipeline(rig, map, options, &spotter);
+  std::vector<std::string> searched;
+  for (int k = 0; k < 8; ++k) {
+    const double t = k / 10.0;
+    spotter.pose = geometry::Pose2(2.0 * t, 0.1, 0.0);
+    const FrameResult r = pipeline.process(testing::placeholderFrame(rig, t, 2.0));
+    if (r.has_pose) {
+      EXPECT_LT((r.pose.translation() - spotter.pose.translation()).norm(), 0.01);
+      break;
+    }
+    int full = 0;
+    for (const auto& c : r.cameras)
+      if (c.full_frame) {
+        ++full;
+        searched.push_back(c.camera);
+      }
+    EXPECT_EQ(full, 1) << "frame " << k;
+  }
+  // Rig order front, rear, left, right: the fix comes on the third frame, from the left.
+  EXPECT_EQ(searched, (std::vector<std::string>{"front", "rear"}));
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "localize/pose_solver.h"
 #include "localize/region_budget.h"
 #include "localize/roi_prediction.h"
+#include "localize/search_window.h"
 
 namespace parkloc::localize {
 namespace {
@@ -148,6 +149,8 @@ struct Pipeline::Impl {
   int tracking_frames = 0;
   size_t next_full_frame_camera = 0;
   size_t next_search_camera = 0;
+  // Searching: texts matched in the last frame sets, carried along by odometry.
+  SearchWindow search_window;
   std::map<std::string, int> last_asked;
   // Tracking: the frame index at which each landmark was last read and accepted.
   std::map<std::string, int> last_read;
@@ -210,6 +213,7 @@ struct Pipeline::Impl {
     tracking_frames = 0;
     next_full_frame_camera = 0;
     next_search_camera = 0;
+    search_window = SearchWindow(searchWindowFrames());
     last_asked.clear();
     last_read.clear();
     last_read_attempt.clear();
@@ -232,6 +236,13 @@ struct Pipeline::Impl {
                        0.0);
       }
     }
+  }
+
+  // One camera per frame set: the window spans a turn of the others.
+  size_t searchWindowFrames() const {
+    const int per = options.search_cameras_per_frame;
+    if (per <= 0 || static_cast<size_t>(per) >= rig.cameras.size()) return 0;
+    return (rig.cameras.size() + static_cast<size_t>(per) - 1) / static_cast<size_t>(per) - 1;
   }
 
   bool tracking() const {
@@ -482,10 +493,18 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
       }
     }
   } else if (!inside.empty()) {
-    const SolverResult s = solvePose(rig, inside, std::nullopt, solver_options);
+    // Searching: this frame set's texts and those of the last few, carried by odometry.
+    const SearchWindow::Combined all = search_window.combine(rig, inside);
+    SolverResult s = solvePose(all.rig, all.observations, std::nullopt, solver_options);
+    s.residual_px.resize(std::min(s.residual_px.size(), all.current));
+    s.inlier.resize(std::min(s.inlier.size(), all.current));
     result.solver_iterations = s.iterations;
     result.solver_converged = s.converged;
     markSolve(inside, s, result);
+    if (s.ok)
+      search_window.clear();
+    else
+      search_window.add(inside);
     if (s.ok) {
       fix = s;
       result.measurement = s.pose;
@@ -495,6 +514,7 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
     }
   }
   result.timings.solver_ms += msSince(t_solver);
+  if (was_tracking) search_window.clear();
 
   const auto t_filter = Clock::now();
   if (fix) {
@@ -625,7 +645,24 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
   }
   // A filter started from options.initial_pose starts its clock at the first frame.
   if (time_ok && !have_frame && ekf.initialised()) ekf.setTime(frame.timestamp);
+  const std::optional<io::OdometrySample> held_before =
+      have_odometry ? std::optional<io::OdometrySample>(hold) : std::nullopt;
+  const bool had_frame = have_frame;
+  const double previous_frame_time = last_frame_time;
   consumeOdometry(frame, time_ok, result.warnings);
+  if (!search_window.empty()) {
+    // The search window's texts follow the vehicle (odometry since the last frame set).
+    std::optional<geometry::Pose2> motion;
+    if (time_ok && had_frame && options.use_odometry) {
+      std::vector<io::OdometrySample> samples;
+      for (const auto& o : frame.odometry)
+        if (std::isfinite(o.timestamp) && std::isfinite(o.speed) && std::isfinite(o.yaw_rate) &&
+            (samples.empty() || o.timestamp > samples.back().timestamp))
+          samples.push_back(o);
+      motion = integrateOdometry(held_before, samples, previous_frame_time, frame.timestamp);
+    }
+    search_window.advance(motion);
+  }
   if (time_ok && !options.paper_mode) predictTo(frame.timestamp, result.warnings);
   if (time_ok) {
     have_frame = true;
@@ -656,9 +693,9 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
       one_full_frame = true;
     }
   }
-  // Searching (no pose, or lost): the full frame of a few cameras per frame set, in turn.
-  const bool searching =
-      !options.paper_mode && options.map_guided && !is_tracking && interval > 1;
+  // Searching (no pose yet): the full frame of a few cameras per frame set, in turn.
+  const bool searching = !options.paper_mode && options.map_guided && !ekf.initialised() &&
+                         interval > 1;
   const int per_search = options.search_cameras_per_frame;
   if (searching && per_search > 0 && static_cast<size_t>(per_search) < n_cameras) {
     full_frame.assign(n_cameras, false);

@@ -165,10 +165,14 @@ struct PipelineOptions {
   // the slowest sweep frame set from 117-131 ms to 61-102 ms there.
   double sweep_detection_scale = 0.5;
 
-  // Searching (added later; additive): before the first fix, and when the track is lost,
-  // this many cameras are spotted on the full frame per frame set, in turn (0: all of
-  // them every frame set). Spotting one camera costs ~120 ms on two cores, all four ~480 ms
-  // (the p99 latency target is 150 ms); the vehicle is searched for over 0.4 s at 10 Hz.
+  // Searching (added later; additive): before the first fix, this many cameras are spotted
+  // on the full frame per frame set, in turn (0: all of them every frame set), and the
+  // texts of the last few frame sets are solved together (localize/search_window.h).
+  // Spotting one camera costs 50-130 ms on two cores, all four 400-700 ms (the p99 latency
+  // target is 150 ms). When the track is lost (e.g. a kidnapped vehicle), every camera is
+  // spotted every frame set: a single far text seen end-on rarely fixes a pose, and
+  // re-localising then matters more than latency (a turn of one camera per frame set did not
+  // recover from a 4 m jump on g08_B1_d1 within 5 s; all four did in 3.5 s).
   int search_cameras_per_frame = 1;
   // While searching, at most this many detected texts are read per camera (the largest
   // first; 0: all).

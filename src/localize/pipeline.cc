@@ -62,9 +62,13 @@ double polygonArea(const std::array<Eigen::Vector2d, 4>& q) {
   return std::abs(a);
 }
 
-// A fix's covariance as the filter sees it: inflated, with a floor (1 cm, 0.05 degrees).
-Eigen::Matrix3d fixCovariance(const Eigen::Matrix3d& solver, double inflation) {
-  Eigen::Matrix3d R = inflation * solver;
+// A fix's covariance as the filter sees it: inflated, grown by how much worse than the
+// assumed pixel noise the corners fit (a-posteriori variance factor: a fix from one text
+// seen at a grazing angle whose corners fit to 6 px must not count as one that fits to 1),
+// with a floor (1 cm, 0.05 degrees).
+Eigen::Matrix3d fixCovariance(const SolverResult& fix, const PipelineOptions& options) {
+  const double fit = options.pixel_sigma > 0.0 ? fix.rms_px / options.pixel_sigma : 0.0;
+  Eigen::Matrix3d R = options.fix_covariance_inflation * std::max(1.0, fit * fit) * fix.covariance;
   const double yaw_floor = 0.05 * M_PI / 180.0;
   R.diagonal() += Eigen::Vector3d(1e-4, 1e-4, yaw_floor * yaw_floor);
   return R;
@@ -461,7 +465,7 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
       result.solver_converged = s.converged;
       markSolve(inside, s, result);
       if (s.ok) {
-        const Eigen::Matrix3d R = fixCovariance(s.covariance, options.fix_covariance_inflation);
+        const Eigen::Matrix3d R = fixCovariance(s, options);
         result.measurement = s.pose;
         result.measurement_covariance = R;
         if (ekf.mahalanobis2(s.pose, R) <= options.fix_gate_chi2) {
@@ -481,14 +485,14 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
       all.insert(all.end(), outside.begin(), outside.end());
       const SolverResult s = solvePose(rig, all, std::nullopt, solver_options);
       if (s.ok &&
-          ekf.mahalanobis2(s.pose, fixCovariance(s.covariance, options.fix_covariance_inflation)) >
+          ekf.mahalanobis2(s.pose, fixCovariance(s, options)) >
               options.fix_gate_chi2) {
         disagreeing = s;
         disagreeing_landmarks = landmarksIn(all, s);
         if (!result.measurement) {
           result.measurement = s.pose;
           result.measurement_covariance =
-              fixCovariance(s.covariance, options.fix_covariance_inflation);
+              fixCovariance(s, options);
         }
       }
     }
@@ -508,7 +512,7 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
     if (s.ok) {
       fix = s;
       result.measurement = s.pose;
-      result.measurement_covariance = fixCovariance(s.covariance, options.fix_covariance_inflation);
+      result.measurement_covariance = fixCovariance(s, options);
     } else {
       result.warnings.push_back("solver: " + s.failure);
     }
@@ -518,7 +522,7 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
 
   const auto t_filter = Clock::now();
   if (fix) {
-    const Eigen::Matrix3d R = fixCovariance(fix->covariance, options.fix_covariance_inflation);
+    const Eigen::Matrix3d R = fixCovariance(*fix, options);
     if (was_tracking) {
       ekf.update(fix->pose, R);
     } else {
@@ -550,7 +554,7 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
     const int needed = std::max(1, options.reinit_after_rejected_fixes);
     if (disagreeing_fixes >= (disagreeing_with_consensus ? needed : 2 * needed)) {
       ekf.initialise(disagreeing->pose,
-                     fixCovariance(disagreeing->covariance, options.fix_covariance_inflation),
+                     fixCovariance(*disagreeing, options),
                      result.timestamp);
       result.reinitialised = true;
       result.status = TrackingStatus::kOk;

@@ -113,6 +113,26 @@ TEST_F(PipelineTest, TracksADriveWithNoisyOracleDetections) {
   EXPECT_LT(yaw_sum / frames, 0.1 * M_PI / 180);
 }
 
+TEST_F(PipelineTest, AFixWhoseCornersFitWorseThanThePixelNoiseCountsForLess) {
+  // The same first frame with exact corners and with corners 6 px off (1.5 px assumed):
+  // the solver's covariance assumes the pixel noise, the filter's must not.
+  const Drive drive;
+  auto fixCovariance = [&](double pixel_noise) {
+    spot.pixel_noise = pixel_noise;
+    std::mt19937 fixed(5);
+    std::swap(rng, fixed);
+    Pipeline pipeline(rig, map, PipelineOptions{});
+    const FrameResult r = pipeline.process(frame(drive, 0));
+    EXPECT_TRUE(r.measurement_covariance.has_value());
+    return r.measurement_covariance.value_or(Eigen::Matrix3d::Zero());
+  };
+  const Eigen::Matrix3d exact = fixCovariance(0.0), noisy = fixCovariance(6.0);
+  // Grown by about (rms / pixel_sigma)^2 = 16 in position and yaw.
+  EXPECT_GT(noisy(0, 0), 8.0 * exact(0, 0));
+  EXPECT_GT(noisy(1, 1), 8.0 * exact(1, 1));
+  EXPECT_GT(noisy(2, 2), 8.0 * exact(2, 2));
+}
+
 TEST_F(PipelineTest, DeadReckonsWithGrowingCovarianceWhenNothingIsSeen) {
   Pipeline pipeline(rig, map);
   Drive drive;

@@ -138,8 +138,8 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
       ->check(CLI::Range(0.25, 1.0))
       ->capture_default_str();
   cmd->add_option("--search-cameras", args->search_cameras,
-                  "Cameras spotted on the full frame per frame set before the first fix and "
-                  "when lost, in turn (0: all)")
+                  "Cameras spotted on the full frame per frame set before the first fix, in "
+                  "turn (0: all; a lost track always spots all)")
       ->check(CLI::Range(0, 16))
       ->capture_default_str();
   cmd->add_option("--max-frames", args->max_frames, "Process at most N frame sets (0: all)");

@@ -294,7 +294,10 @@ struct Pipeline::Impl {
     last_fix = std::make_pair(t, ekf.pose());
   }
 
-  void consumeOdometry(const FrameInput& frame, bool time_ok, std::vector<std::string>& warnings) {
+  // Returns the samples it accepted (finite, each after the last), in order.
+  std::vector<io::OdometrySample> consumeOdometry(const FrameInput& frame, bool time_ok,
+                                                  std::vector<std::string>& warnings) {
+    std::vector<io::OdometrySample> accepted;
     for (const auto& s : frame.odometry) {
       if (!std::isfinite(s.timestamp) || !std::isfinite(s.speed) || !std::isfinite(s.yaw_rate)) {
         warnings.push_back(
@@ -317,6 +320,7 @@ struct Pipeline::Impl {
         paper_yaw += hold.yaw_rate * (s.timestamp - hold.timestamp);
       hold = s;
       have_odometry = true;
+      accepted.push_back(s);
     }
     if (options.paper_mode && options.paper_heading == PaperHeadingSource::kOdometry &&
         have_odometry && time_ok && frame.timestamp > hold.timestamp) {
@@ -324,6 +328,7 @@ struct Pipeline::Impl {
       paper_yaw += hold.yaw_rate * (frame.timestamp - hold.timestamp);
       hold.timestamp = frame.timestamp;
     }
+    return accepted;
   }
 
   // Tracking: texts read lately are only fitted; of the others, the largest are read,
@@ -484,15 +489,13 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
       std::vector<LandmarkObservation> all = inside;
       all.insert(all.end(), outside.begin(), outside.end());
       const SolverResult s = solvePose(rig, all, std::nullopt, solver_options);
-      if (s.ok &&
-          ekf.mahalanobis2(s.pose, fixCovariance(s, options)) >
-              options.fix_gate_chi2) {
+      const Eigen::Matrix3d R = s.ok ? fixCovariance(s, options) : Eigen::Matrix3d::Zero();
+      if (s.ok && ekf.mahalanobis2(s.pose, R) > options.fix_gate_chi2) {
         disagreeing = s;
         disagreeing_landmarks = landmarksIn(all, s);
         if (!result.measurement) {
           result.measurement = s.pose;
-          result.measurement_covariance =
-              fixCovariance(s, options);
+          result.measurement_covariance = R;
         }
       }
     }
@@ -505,15 +508,13 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
     result.solver_iterations = s.iterations;
     result.solver_converged = s.converged;
     markSolve(inside, s, result);
-    if (s.ok)
-      search_window.clear();
-    else
-      search_window.add(inside);
     if (s.ok) {
+      search_window.clear();
       fix = s;
       result.measurement = s.pose;
       result.measurement_covariance = fixCovariance(s, options);
     } else {
+      search_window.add(inside);
       result.warnings.push_back("solver: " + s.failure);
     }
   }
@@ -653,18 +654,12 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
       have_odometry ? std::optional<io::OdometrySample>(hold) : std::nullopt;
   const bool had_frame = have_frame;
   const double previous_frame_time = last_frame_time;
-  consumeOdometry(frame, time_ok, result.warnings);
+  const auto samples = consumeOdometry(frame, time_ok, result.warnings);
   if (!search_window.empty()) {
     // The search window's texts follow the vehicle (odometry since the last frame set).
     std::optional<geometry::Pose2> motion;
-    if (time_ok && had_frame && options.use_odometry) {
-      std::vector<io::OdometrySample> samples;
-      for (const auto& o : frame.odometry)
-        if (std::isfinite(o.timestamp) && std::isfinite(o.speed) && std::isfinite(o.yaw_rate) &&
-            (samples.empty() || o.timestamp > samples.back().timestamp))
-          samples.push_back(o);
+    if (time_ok && had_frame && options.use_odometry)
       motion = integrateOdometry(held_before, samples, previous_frame_time, frame.timestamp);
-    }
     search_window.advance(motion);
   }
   if (time_ok && !options.paper_mode) predictTo(frame.timestamp, result.warnings);

@@ -57,8 +57,7 @@ parkloc::ocr::TextClassifier trainAndScore(const TrainArgs& args, float ratio, b
 }
 
 const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
-  auto* train = parent.add_subcommand("train", "Train the learned parts of parkloc");
-  train->require_subcommand(1);
+  auto* train = parkloc::app::commandGroup(parent, "train", "Train the learned parts of parkloc");
   auto args = std::make_shared<TrainArgs>();
   auto* cmd = train->add_subcommand(
       "classifier", "Text class head (pillar / parking number / other) from a dataset");

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "geometry/ground_projection.h"
+
 namespace parkloc::ocr {
 
 GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOptions& options)
@@ -54,13 +56,29 @@ cv::Mat GroundView::render(const cv::Mat& raw) const {
   return view;
 }
 
+Eigen::Vector2d GroundView::groundFromView(const cv::Point2f& v) const {
+  return origin_ + right_ * (v.x * options_.resolution) + toward_ * (v.y * options_.resolution);
+}
+
+cv::Point2f GroundView::viewFromGround(const Eigen::Vector2d& vehicle_xy) const {
+  // right_ and toward_ are orthonormal, so the inverse is a projection onto each axis.
+  const Eigen::Vector2d d = (vehicle_xy - origin_) / options_.resolution;
+  return cv::Point2f(static_cast<float>(d.dot(right_)), static_cast<float>(d.dot(toward_)));
+}
+
 std::optional<cv::Point2f> GroundView::rawFromView(const cv::Point2f& v) const {
-  const Eigen::Vector2d g =
-      origin_ + right_ * (v.x * options_.resolution) + toward_ * (v.y * options_.resolution);
+  const Eigen::Vector2d g = groundFromView(v);
   const auto px = camera_.model.project(camera_.vehicle_from_camera.inverse() *
                                         Eigen::Vector3d(g.x(), g.y(), 0.0));
   if (!px) return std::nullopt;
   return cv::Point2f(static_cast<float>(px->x()), static_cast<float>(px->y()));
+}
+
+std::optional<cv::Point2f> GroundView::viewFromRaw(const cv::Point2f& raw_pixel) const {
+  const auto floor = geometry::pixelToPlane(camera_, Eigen::Vector2d(raw_pixel.x, raw_pixel.y),
+                                            geometry::Plane::ground());
+  if (!floor) return std::nullopt;
+  return viewFromGround(floor->head<2>());
 }
 
 }  // namespace parkloc::ocr

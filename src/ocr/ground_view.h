@@ -28,6 +28,13 @@ class GroundView {
   cv::Mat render(const cv::Mat& raw) const;
   // View pixel -> raw image pixel through the ground plane; empty outside the lens' field.
   std::optional<cv::Point2f> rawFromView(const cv::Point2f& view_pixel) const;
+  // Raw image pixel -> view pixel through the ground plane; empty when the pixel's ray does
+  // not meet the floor in front of the camera (above the horizon) or cannot be unprojected.
+  // Exact for points on the floor only: anything above it lands farther out in the view.
+  std::optional<cv::Point2f> viewFromRaw(const cv::Point2f& raw_pixel) const;
+  // View pixel <-> ground point (x, y) in the vehicle frame; affine, inverse of each other.
+  Eigen::Vector2d groundFromView(const cv::Point2f& view_pixel) const;
+  cv::Point2f viewFromGround(const Eigen::Vector2d& vehicle_xy) const;
 
  private:
   geometry::RigCamera camera_;

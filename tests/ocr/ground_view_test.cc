@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "geometry/rig.h"
 
 namespace parkloc::ocr {
@@ -36,6 +38,55 @@ TEST(GroundView, ViewPixelsMapToTheRawPixelsOfTheirGroundPoints) {
     EXPECT_TRUE(view.rawFromView(cv::Point2f(view.size().width / 2.f, view.size().height / 2.f)))
         << camera.name;
     EXPECT_GT(checked, 3) << camera.name;
+  }
+}
+
+TEST(GroundView, RawPixelsMapBackToTheirViewPixels) {
+  for (const auto& camera : geometry::defaultRig().cameras) {
+    const GroundView view(camera);
+    int checked = 0;
+    for (int r = 5; r < view.size().height; r += 53)
+      for (int c = 5; c < view.size().width; c += 47) {
+        const cv::Point2f v(c + 0.25f, r + 0.75f);
+        const auto raw = view.rawFromView(v);
+        if (!raw || !camera.model.inImage(Eigen::Vector2d(raw->x, raw->y))) continue;
+        const auto back = view.viewFromRaw(*raw);
+        ASSERT_TRUE(back) << camera.name << " view pixel " << v;
+        EXPECT_NEAR(back->x, v.x, 0.05) << camera.name << " view pixel " << v;
+        EXPECT_NEAR(back->y, v.y, 0.05) << camera.name << " view pixel " << v;
+        ++checked;
+      }
+    EXPECT_GT(checked, 20) << camera.name;
+  }
+}
+
+TEST(GroundView, GroundPointsMapToViewPixelsAndBack) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> coord(-8.0, 8.0);
+  for (const auto& camera : geometry::defaultRig().cameras) {
+    const GroundView view(camera);
+    for (int i = 0; i < 50; ++i) {
+      const Eigen::Vector2d g(coord(rng), coord(rng));
+      const Eigen::Vector2d back = view.groundFromView(view.viewFromGround(g));
+      EXPECT_NEAR(back.x(), g.x(), 1e-4) << camera.name;
+      EXPECT_NEAR(back.y(), g.y(), 1e-4) << camera.name;
+    }
+  }
+}
+
+TEST(GroundView, RawPixelsAboveTheHorizonHaveNoViewPixel) {
+  for (const auto& camera : geometry::defaultRig().cameras) {
+    const GroundView view(camera);
+    // A point 10 m out along the camera's heading, 0.5 m above the lens (3 degrees above the
+    // horizon, still in the image of the mirror cameras looking 55 degrees down): its ray
+    // never meets the floor.
+    Eigen::Vector3d heading = camera.vehicle_from_camera.linear().col(2);
+    heading.z() = 0.0;
+    const Eigen::Vector3d above = camera.vehicle_from_camera.translation() +
+                                  10.0 * heading.normalized() + Eigen::Vector3d(0, 0, 0.5);
+    const auto px = camera.model.project(camera.vehicle_from_camera.inverse() * above);
+    ASSERT_TRUE(px && camera.model.inImage(*px)) << camera.name;
+    EXPECT_FALSE(view.viewFromRaw(cv::Point2f(px->x(), px->y()))) << camera.name;
   }
 }
 

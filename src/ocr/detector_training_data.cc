@@ -1,0 +1,193 @@
+#include "ocr/detector_training_data.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "common/error.h"
+#include "io/sequence.h"
+
+namespace parkloc::ocr {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ViewText {
+  std::array<cv::Point2f, 4> corners;
+  bool care = false;
+  map::TextClass cls = map::TextClass::kParkingNumber;
+  std::string text;
+};
+
+bool insideView(const cv::Point2f& p, const cv::Size& size) {
+  return p.x >= 0.f && p.y >= 0.f && p.x <= size.width - 1.f && p.y <= size.height - 1.f;
+}
+
+bool overlapsView(const std::array<cv::Point2f, 4>& corners, const cv::Size& size) {
+  std::vector<cv::Point2f> hull;
+  cv::convexHull(std::vector<cv::Point2f>(corners.begin(), corners.end()), hull);
+  if (hull.size() < 3) return false;
+  const float w = size.width - 1.f, h = size.height - 1.f;
+  const std::vector<cv::Point2f> view = {{0.f, 0.f}, {w, 0.f}, {w, h}, {0.f, h}};
+  std::vector<cv::Point2f> common;
+  return cv::intersectConvexConvex(hull, view, common, true) > 0.f;
+}
+
+// The labelled instances of one raw image in view pixels. The label polygons are the exact
+// projections of the text corners, so casting them onto the floor places floor text exactly;
+// text on pillars and plates lands farther out (and nowhere above the horizon), so it is kept
+// only as a don't-care region, and only when that region is wholly in the view.
+std::vector<ViewText> viewTexts(const GroundView& view, const io::ImageLabels& labels,
+                                const map::HdMap& map, const DetectorDataOptions& options) {
+  std::vector<ViewText> out;
+  for (const auto& inst : labels.instances) {
+    ViewText t;
+    bool mapped = true;
+    for (int k = 0; k < 4 && mapped; ++k) {
+      const auto v = view.viewFromRaw(cv::Point2f(static_cast<float>(inst.polygon[k].x()),
+                                                  static_cast<float>(inst.polygon[k].y())));
+      if (v) t.corners[k] = *v;
+      mapped = v.has_value();
+    }
+    if (!mapped) continue;
+    const bool all_inside =
+        std::all_of(t.corners.begin(), t.corners.end(),
+                    [&](const cv::Point2f& p) { return insideView(p, view.size()); });
+    // Licence plates are not in the map; like pillar text they stand upright.
+    const map::Landmark* landmark = map.findById(inst.landmark_id);
+    const bool floor = landmark && landmark->surface == map::Surface::kGround;
+    if (floor) {
+      if (!overlapsView(t.corners, view.size())) continue;
+      // A truncated instance runs off the raw image, i.e. into the black part of the view.
+      t.care = inst.legible && inst.occluded_fraction < options.max_occluded_fraction &&
+               !inst.truncated && all_inside;
+    } else if (!all_inside) {
+      continue;
+    }
+    t.cls = inst.cls;
+    t.text = inst.text;
+    std::replace(t.text.begin(), t.text.end(), ',', ' ');  // the line is comma separated
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+std::string conditionOf(const io::Sequence& sequence) {
+  const std::string where = (fs::path(sequence.dir()) / "meta.json").string();
+  nlohmann::json meta;
+  try {
+    meta = nlohmann::json::parse(sequence.metaJson());
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(where + ": malformed JSON: " + e.what());
+  }
+  if (!meta.is_object() || !meta.contains("condition")) return "unknown";
+  if (!meta["condition"].is_string())
+    throw InputError(where + ": field 'condition': expected a string, got " +
+                     meta["condition"].dump());
+  return meta["condition"].get<std::string>();
+}
+
+std::string sequenceName(const std::string& dir) {
+  const fs::path p = fs::path(dir).lexically_normal();
+  return p.has_filename() ? p.filename().string() : p.parent_path().filename().string();
+}
+
+void createDirectory(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw IoError(dir.string() + ": cannot create folder (" + ec.message() + ")");
+}
+
+void writeImage(const fs::path& path, const cv::Mat& image) {
+  bool ok = false;
+  try {
+    ok = cv::imwrite(path.string(), image);
+  } catch (const cv::Exception& e) {
+    throw IoError(path.string() + ": cannot write image (" + e.what() + ")");
+  }
+  if (!ok) throw IoError(path.string() + ": cannot write image");
+}
+
+void writeViewTexts(const fs::path& path, const std::vector<ViewText>& texts) {
+  std::ofstream out(path);
+  for (const auto& t : texts) {
+    for (const auto& c : t.corners) out << fmt::format("{:.1f},{:.1f},", c.x, c.y);
+    out << (t.care ? 1 : 0) << ',' << static_cast<int>(t.cls) << ',' << t.text << '\n';
+  }
+  if (!out) throw IoError(path.string() + ": cannot write");
+}
+
+// Options come from the command line; a tiny resolution would ask for gigabytes of view.
+void checkViewOptions(const GroundViewOptions& v) {
+  auto bad = [](const std::string& field, double value, const std::string& why) {
+    return InputError(fmt::format("ground view option '{}' = {}: {}", field, value, why));
+  };
+  if (!(v.resolution > 0.0)) throw bad("resolution", v.resolution, "must be positive");
+  if (!(v.near >= 0.0)) throw bad("near", v.near, "must not be negative");
+  if (!(v.far > v.near)) throw bad("far", v.far, "must exceed near");
+  if (!(v.half_width > 0.0)) throw bad("half_width", v.half_width, "must be positive");
+  // The view's side is at most the extent along and across the heading together.
+  const double side_px = (v.far - v.near + 2.0 * v.half_width) / v.resolution;
+  if (!(side_px <= 8192.0))
+    throw bad("resolution", v.resolution, fmt::format("view up to {:.0f} px wide", side_px));
+}
+
+}  // namespace
+
+DetectorDataStats writeDetectorTrainingData(const std::vector<std::string>& sequence_dirs,
+                                            const DetectorDataOptions& options) {
+  if (options.out_dir.empty()) throw InputError("detector data: no output folder given");
+  checkViewOptions(options.view);
+  const fs::path root(options.out_dir);
+  createDirectory(root / "images");
+  createDirectory(root / "labels");
+  const fs::path index_path = root / "index.txt";
+  std::ofstream index(index_path);
+  if (!index) throw IoError(index_path.string() + ": cannot write");
+
+  DetectorDataStats stats;
+  for (size_t s = 0; s < sequence_dirs.size(); ++s) {
+    const io::Sequence sequence(sequence_dirs[s]);
+    const std::string name = sequenceName(sequence.dir());
+    const std::string condition = conditionOf(sequence);
+    std::vector<std::pair<std::string, GroundView>> views;
+    for (const auto& camera : sequence.cameras())
+      if (const auto* rig_camera = sequence.rig().find(camera))
+        views.emplace_back(camera, GroundView(*rig_camera, options.view));
+    size_t frames = sequence.timestamps().size();
+    if (options.max_frames_per_sequence > 0)
+      frames = std::min(frames, options.max_frames_per_sequence);
+    for (size_t f = 0; f < frames; f += std::max<size_t>(options.frame_stride, 1)) {
+      for (const auto& [camera, view] : views) {
+        const auto labels = sequence.loadLabels(f, camera);
+        if (!labels) continue;  // nothing to learn from an unlabelled image
+        cv::Mat raw = sequence.loadImage(f, camera);
+        if (raw.empty()) continue;
+        if (raw.channels() == 1) cv::cvtColor(raw, raw, cv::COLOR_GRAY2BGR);
+        if (raw.channels() == 4) cv::cvtColor(raw, raw, cv::COLOR_BGRA2BGR);
+        const std::string stem =
+            fmt::format("{}_{}_{}", name, camera, io::timestampStem(sequence.timestamps()[f]));
+        const std::string image_rel = "images/" + stem + ".png";
+        const std::string labels_rel = "labels/" + stem + ".txt";
+        const auto texts = viewTexts(view, *labels, sequence.map(), options);
+        writeImage(root / image_rel, view.render(raw));
+        writeViewTexts(root / labels_rel, texts);
+        index << image_rel << ' ' << labels_rel << ' ' << condition << '\n';
+        ++stats.images;
+        for (const auto& t : texts) ++(t.care ? stats.care_instances : stats.dont_care_instances);
+      }
+    }
+    if (options.progress) options.progress(s + 1, sequence_dirs.size());
+  }
+  index.flush();
+  if (!index) throw IoError(index_path.string() + ": cannot write");
+  return stats;
+}
+
+}  // namespace parkloc::ocr

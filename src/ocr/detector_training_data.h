@@ -1,0 +1,42 @@
+#pragma once
+// Training data for fine-tuning the DB text detector on ground views (ocr/ground_view.h), the
+// images the spotter feeds it when the camera is known. From dataset sequences (`parkloc
+// simulate` folders), for every n-th frame set and every camera, writes
+//   OUT/images/<sequence>_<camera>_<stem>.png   the ground view of the raw image (BGR)
+//   OUT/labels/<sequence>_<camera>_<stem>.txt   x1,y1,x2,y2,x3,y3,x4,y4,care,class,text
+//   OUT/index.txt                               <image> <labels> <condition>, paths from OUT
+// Label corners are view pixels in the labels' order (TL, TR, BR, BL of the text as it
+// reads), one decimal; class is the dataset's id (0 pillar, 1 parking number, 2 other); commas
+// in the text become spaces. care 1: floor text, legible, less than half occluded, not
+// truncated and wholly in the view; care 0 is a "don't care" region for the loss.
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ocr/ground_view.h"
+
+namespace parkloc::ocr {
+
+struct DetectorDataOptions {
+  std::string out_dir;
+  GroundViewOptions view;
+  size_t frame_stride = 1;             // use every n-th frame set
+  size_t max_frames_per_sequence = 0;  // 0: all
+  double max_occluded_fraction = 0.5;  // care only below this
+  // Called after each sequence.
+  std::function<void(size_t done, size_t total)> progress;
+};
+
+struct DetectorDataStats {
+  size_t images = 0;
+  size_t care_instances = 0;
+  size_t dont_care_instances = 0;
+};
+
+// Reads the sequences' images and labels (frames without a label file are left out); throws
+// InputError for unreadable sequences and IoError for files that cannot be written.
+DetectorDataStats writeDetectorTrainingData(const std::vector<std::string>& sequence_dirs,
+                                            const DetectorDataOptions& options);
+
+}  // namespace parkloc::ocr

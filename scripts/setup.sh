@@ -42,3 +42,18 @@ if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ] || [ ! -e third_party/o
      "$models"/ch_ppocr_mobile_v2.0_cls_infer.onnx "$models"/ppocr_keys_v1.txt third_party/models/
   echo "$want" > "$stamp"
 fi
+
+# The floor-view detector: PaddleOCR's detector with the neck and head that parkloc fine-tuned
+# on floor views (models/floor_detector_tuning.npz, made by tools/detector_tuning/train.py) in
+# place of its own. Written here from the npm model, so no third-party weights are committed.
+tuning=models/floor_detector_tuning.npz
+floor=third_party/models/parkloc_floor_det.onnx
+floor_stamp=third_party/.floor-detector.sha256
+floor_want="$(cat "$tuning" tools/detector_tuning/apply_tuning.py \
+  third_party/models/ch_PP-OCRv4_det_infer.onnx | sha256sum | cut -d' ' -f1)"
+if [ ! -f "$floor" ] || [ ! -f "$floor_stamp" ] || [ "$(cat "$floor_stamp")" != "$floor_want" ]; then
+  # Debian's interpreter, which has python3-onnx (a python3 earlier on PATH may not).
+  /usr/bin/python3 tools/detector_tuning/apply_tuning.py \
+    third_party/models/ch_PP-OCRv4_det_infer.onnx "$tuning" "$floor"
+  echo "$floor_want" > "$floor_stamp"
+fi

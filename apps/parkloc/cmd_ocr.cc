@@ -3,6 +3,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <optional>
 
 #include "apps/parkloc/command.h"
 #include "common/error.h"
@@ -22,6 +23,7 @@ struct OcrArgs {
   std::string map;
   std::string models = PARKLOC_MODEL_DIR;
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
+  std::optional<std::string> floor_detector;  // unset: the fine-tuned one in `models`
   int det_side = 960;
   std::string direction = "classifier";
   bool no_refine = false;
@@ -35,6 +37,7 @@ void run(const OcrArgs& args) {
   ocr::PpOcrOptions options;
   options.models = ocr::PpOcrModelPaths::inDirectory(args.models);
   options.models.classifier = args.classifier;
+  if (args.floor_detector) options.models.floor_detection = *args.floor_detector;
   options.detection_max_side = args.det_side;
   options.direction =
       args.direction == "both" ? ocr::DirectionMode::kDecodeBoth : ocr::DirectionMode::kClassifier;
@@ -91,6 +94,9 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
       ->capture_default_str();
   cmd->add_option("--classifier", args->classifier, "Text classifier (YAML); '' for none")
       ->capture_default_str();
+  cmd->add_option("--floor-detector", args->floor_detector,
+                  "Detector for the floor view (ONNX); '' for PaddleOCR's own (default: the "
+                  "fine-tuned one in --models)");
   cmd->add_option("--det-side", args->det_side, "Detection input: longer side in pixels")
       ->capture_default_str();
   cmd->add_option("--direction", args->direction, "classifier | both")

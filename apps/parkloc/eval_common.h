@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "apps/parkloc/command.h"
@@ -18,11 +19,32 @@ namespace parkloc::app {
 struct SpotterArgs {
   std::string models = PARKLOC_MODEL_DIR;
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
+  std::optional<std::string> floor_detector;  // unset: the one in `models`
+  ocr::GroundViewOptions floor_view;
+  double floor_unclip_ratio = ocr::PpOcrOptions{}.floor_db.unclip_ratio;
 
   void addTo(CLI::App* cmd) {
     cmd->add_option("--models", models, "Folder with the PP-OCRv4 ONNX models")
         ->capture_default_str();
     cmd->add_option("--classifier", classifier, "Text classifier (YAML); '' for none")
+        ->capture_default_str();
+    cmd->add_option("--floor-detector", floor_detector,
+                    "Detector for the floor view (ONNX); '' for PaddleOCR's own (default: the "
+                    "fine-tuned one in --models)");
+    cmd->add_option("--floor-view-far", floor_view.far, "Floor view: metres ahead of a camera")
+        ->check(CLI::Range(1.0, 30.0))
+        ->capture_default_str();
+    cmd->add_option("--floor-view-half-width", floor_view.half_width,
+                    "Floor view: metres to each side of a camera")
+        ->check(CLI::Range(1.0, 30.0))
+        ->capture_default_str();
+    cmd->add_option("--floor-unclip-ratio", floor_unclip_ratio,
+                    "Box growth of the fine-tuned floor detector (DB unclip ratio)")
+        ->check(CLI::Range(1.0, 4.0))
+        ->capture_default_str();
+    cmd->add_option("--floor-view-resolution", floor_view.resolution,
+                    "Floor view: metres per pixel")
+        ->check(CLI::Range(0.005, 0.1))
         ->capture_default_str();
   }
 };
@@ -30,6 +52,9 @@ struct SpotterArgs {
 inline std::unique_ptr<ocr::TextSpotter> makeSpotter(const SpotterArgs& args) {
   ocr::PpOcrOptions options;
   options.models = ocr::PpOcrModelPaths::inDirectory(args.models);
+  if (args.floor_detector) options.models.floor_detection = *args.floor_detector;
+  options.ground_view = args.floor_view;
+  options.floor_db.unclip_ratio = args.floor_unclip_ratio;
   if (!args.classifier.empty() && std::filesystem::exists(args.classifier)) {
     options.models.classifier = args.classifier;
   }

@@ -8,6 +8,7 @@
 
 #include "common/error.h"
 #include "geometry/rig.h"
+#include "ocr/ppocr/pp_ocr_networks.h"
 #include "synthetic_text.h"
 
 namespace parkloc::ocr {
@@ -141,6 +142,33 @@ TEST(PpOcrSpotterModels, MissingModelFileIsAnInputErrorNamingThePath) {
               std::string::npos)
         << e.what();
   }
+}
+
+TEST(PpOcrSpotterModels, MissingFloorDetectorIsAnInputErrorNamingThePath) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.models.floor_detection = "/nonexistent/parkloc_floor_det.onnx";
+  try {
+    PpOcrSpotter spotter(options);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/parkloc_floor_det.onnx"), std::string::npos)
+        << e.what();
+  }
+}
+
+// The set-up writes the floor detector from PaddleOCR's with parkloc's tuned tensors: its
+// probability map of the same floor view must differ from the stock detector's.
+TEST(PpOcrSpotterModels, TheFloorDetectorIsNotPaddleOcrsOwn) {
+  const auto paths = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  const DbDetector stock(paths.detection, {}), floor(paths.floor_detection, {});
+  const auto rig = geometry::defaultRig();
+  const auto scene =
+      testing::renderFloorText(*rig.find("left"), "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
+  const cv::Mat view = GroundView(*rig.find("left")).render(scene.image);
+  const cv::Mat a = stock.probability({view})[0], b = floor.probability({view})[0];
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_GT(cv::norm(a, b, cv::NORM_L1) / a.total(), 1e-3);
 }
 
 }  // namespace

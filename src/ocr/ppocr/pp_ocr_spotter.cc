@@ -13,6 +13,7 @@ namespace parkloc::ocr {
 PpOcrModelPaths PpOcrModelPaths::inDirectory(const std::string& dir) {
   PpOcrModelPaths paths;
   paths.detection = dir + "/ch_PP-OCRv4_det_infer.onnx";
+  paths.floor_detection = dir + "/" + std::string(kFloorDetectorFile);
   paths.recognition = dir + "/ch_PP-OCRv4_rec_infer.onnx";
   paths.direction = dir + "/ch_ppocr_mobile_v2.0_cls_infer.onnx";
   paths.dictionary = dir + "/ppocr_keys_v1.txt";
@@ -29,6 +30,7 @@ void requireBgrImage(const cv::Mat& image, const std::string& what) {
 
 struct PpOcrSpotter::Networks {
   DbDetector detector;
+  std::optional<DbDetector> floor_detector;  // empty: `detector` serves the floor view too
   CtcRecognizer recognizer;
   std::optional<DirectionClassifier> direction;
   Charset charset;
@@ -51,9 +53,11 @@ struct ReadJob {
 
 PpOcrSpotter::PpOcrSpotter(const PpOcrOptions& options) : options_(options) {
   const auto& m = options.models;
-  nets_ = std::unique_ptr<Networks>(new Networks{
-      DbDetector(m.detection, options.onnx), CtcRecognizer(m.recognition, options.onnx),
-      std::nullopt, Charset::fromDictionaryFile(m.dictionary), TextClassifier()});
+  nets_ = std::unique_ptr<Networks>(
+      new Networks{DbDetector(m.detection, options.onnx), std::nullopt,
+                   CtcRecognizer(m.recognition, options.onnx), std::nullopt,
+                   Charset::fromDictionaryFile(m.dictionary), TextClassifier()});
+  if (!m.floor_detection.empty()) nets_->floor_detector.emplace(m.floor_detection, options.onnx);
   if (!m.direction.empty()) nets_->direction.emplace(m.direction, options.onnx);
   if (!m.classifier.empty()) nets_->classifier = TextClassifier::load(m.classifier);
 }
@@ -198,7 +202,8 @@ const GroundView& PpOcrSpotter::groundView(const geometry::RigCamera& camera) {
 
 std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                                                       const SpotRequest& request,
-                                                      const geometry::RigCamera* camera) {
+                                                      const geometry::RigCamera* camera,
+                                                      bool floor_view) {
   const double scale =
       std::min(1.0, options_.detection_max_side / double(std::max(image.cols, image.rows))) *
       std::clamp(static_cast<double>(request.detection_scale), 0.1, 1.0);
@@ -208,11 +213,14 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     resized = image;
   else
     cv::resize(image, resized, {w, h}, 0, 0, cv::INTER_AREA);
-  const cv::Mat probability = nets_->detector.probability({resized})[0];
+  const bool tuned = floor_view && nets_->floor_detector;
+  const DbDetector& detector = tuned ? *nets_->floor_detector : nets_->detector;
+  const cv::Mat probability = detector.probability({resized})[0];
   const float sx = float(image.cols) / probability.cols, sy = float(image.rows) / probability.rows;
 
   std::vector<ReadJob> jobs;
-  for (const DbBox& box : dbBoxesFromProbability(probability, options_.db)) {
+  for (const DbBox& box :
+       dbBoxesFromProbability(probability, tuned ? options_.floor_db : options_.db)) {
     ReadJob job;
     for (int k = 0; k < 4; ++k)
       job.quad[k] = {(box.quad[k].x + 0.5f) * sx - 0.5f, (box.quad[k].y + 0.5f) * sy - 0.5f};
@@ -251,7 +259,7 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
   if (ground) {
     // Floor text, found and read in the bird's-eye view, its corners mapped back to raw.
     const GroundView& view = groundView(*request.camera);
-    for (TextInstance& inst : detectAndRead(view.render(image), request, nullptr)) {
+    for (TextInstance& inst : detectAndRead(view.render(image), request, nullptr, true)) {
       bool inside = true;
       for (auto& p : inst.polygon) {
         const auto raw = view.rawFromView(p);
@@ -268,7 +276,7 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
   }
   if (!ground || options_.view == FisheyeView::kGroundAndRaw) {
     const size_t from_ground = out.size();
-    for (TextInstance& inst : detectAndRead(image, request, request.camera)) {
+    for (TextInstance& inst : detectAndRead(image, request, request.camera, false)) {
       const cv::Point2f c =
           (inst.polygon[0] + inst.polygon[1] + inst.polygon[2] + inst.polygon[3]) * 0.25f;
       bool seen = false;

@@ -17,14 +17,20 @@
 
 namespace parkloc::ocr {
 
+// The fine-tuned floor-view detector's file name in the model folder (scripts/setup.sh).
+inline constexpr const char* kFloorDetectorFile = "parkloc_floor_det.onnx";
+
 struct PpOcrModelPaths {
   std::string detection;
+  // The detector run on the floor view: PP-OCRv4's with its neck and head fine-tuned by
+  // parkloc on floor views (tools/detector_tuning, written at set-up); empty: `detection`.
+  std::string floor_detection;
   std::string recognition;
   std::string direction;  // empty: decide the direction by decoding both
   std::string dictionary;
   std::string classifier;  // empty: every instance is TextClass::kOther with score 0
 
-  // The PaddleOCR file names inside `dir` (and no classifier).
+  // The PaddleOCR file names inside `dir`, the fine-tuned floor detector, no classifier.
   static PpOcrModelPaths inDirectory(const std::string& dir);
 };
 
@@ -44,6 +50,15 @@ struct PpOcrOptions {
   PpOcrModelPaths models;
   OnnxOptions onnx;
   DbOptions db;
+  // Post-processing for the fine-tuned floor detector: it was trained on DB's shrunk kernels
+  // (r = 0.4, tools/detector_tuning/db_targets.py), which an unclip ratio of about 2 grows
+  // back to the whole text box for text 3-4 times as long as high; PaddleOCR's own 1.5
+  // leaves boxes a fifth too low, and crops that cut into the glyphs read worse.
+  DbOptions floor_db = [] {
+    DbOptions o;
+    o.unclip_ratio = 2.0;
+    return o;
+  }();
   FisheyeView view = FisheyeView::kGround;
   GroundViewOptions ground_view;
   // Full-frame detection input: the longer side is scaled to this (multiple of 32).
@@ -91,7 +106,7 @@ class PpOcrSpotter : public TextSpotter {
   std::vector<TextInstance> readRegions(const cv::Mat& image, const SpotRequest& request);
 
   std::vector<TextInstance> detectAndRead(const cv::Mat& image, const SpotRequest& request,
-                                          const geometry::RigCamera* camera);
+                                          const geometry::RigCamera* camera, bool floor_view);
   const GroundView& groundView(const geometry::RigCamera& camera);
 
   PpOcrOptions options_;

@@ -1,0 +1,81 @@
+"""tools/detector_tuning/apply_tuning.py on a two-node model made here: a tuning replaces the
+Constant it names and nothing else; a tuning for another model is refused whole."""
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+import onnx
+from onnx import helper, numpy_helper
+
+SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools",
+                      "detector_tuning", "apply_tuning.py")
+
+
+def constant(name, value):
+    return helper.make_node("Constant", [], [name], value=numpy_helper.from_array(value, name))
+
+
+def tiny_model(path):
+    w = np.arange(2 * 1 * 3 * 3, dtype=np.float32).reshape(2, 1, 3, 3)
+    b = np.array([0.5, -0.5], np.float32)
+    nodes = [constant("conv.w", w), constant("conv.b", b),
+             helper.make_node("Conv", ["x", "conv.w", "conv.b"], ["y"], pads=[1, 1, 1, 1])]
+    graph = helper.make_graph(
+        nodes, "tiny", [helper.make_tensor_value_info("x", onnx.TensorProto.FLOAT, [1, 1, 4, 4])],
+        [helper.make_tensor_value_info("y", onnx.TensorProto.FLOAT, [1, 2, 4, 4])])
+    onnx.save(helper.make_model(graph, opset_imports=[helper.make_opsetid("", 11)]), path)
+    return w, b
+
+
+def constants(path):
+    model = onnx.load(path)
+    return {n.output[0]: numpy_helper.to_array(n.attribute[0].t)
+            for n in model.graph.node if n.op_type == "Constant"}
+
+
+def run(*args):
+    return subprocess.run([sys.executable, SCRIPT, *args], capture_output=True, text=True)
+
+
+class ApplyTuningTest(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+        self.base = os.path.join(self.dir.name, "base.onnx")
+        self.out = os.path.join(self.dir.name, "out.onnx")
+        self.w, self.b = tiny_model(self.base)
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def tuning(self, **tensors):
+        path = os.path.join(self.dir.name, "tuning.npz")
+        np.savez(path, **tensors)
+        return path
+
+    def test_replaces_the_named_constant_and_keeps_the_others(self):
+        new_b = np.array([2.0, 3.0], np.float16)
+        result = run(self.base, self.tuning(**{"conv.b": new_b}), self.out)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        c = constants(self.out)
+        np.testing.assert_array_equal(c["conv.b"], new_b.astype(np.float32))
+        self.assertEqual(c["conv.b"].dtype, np.float32)
+        np.testing.assert_array_equal(c["conv.w"], self.w)
+
+    def test_refuses_a_tensor_the_model_does_not_have(self):
+        result = run(self.base, self.tuning(**{"other.w": np.zeros(2, np.float32)}), self.out)
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn("tensor other.w is not in", result.stderr)
+        self.assertFalse(os.path.exists(self.out))
+
+    def test_refuses_a_tensor_of_another_shape(self):
+        result = run(self.base, self.tuning(**{"conv.b": np.zeros(3, np.float32)}), self.out)
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn("has shape (3,), the model's has (2,)", result.stderr)
+        self.assertFalse(os.path.exists(self.out))
+
+
+if __name__ == "__main__":
+    unittest.main()

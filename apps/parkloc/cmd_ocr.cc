@@ -3,9 +3,9 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
-#include <optional>
 
 #include "apps/parkloc/command.h"
+#include "apps/parkloc/eval_common.h"
 #include "common/error.h"
 #include "geometry/rig.h"
 #include "io/calibration_yaml.h"
@@ -23,7 +23,7 @@ struct OcrArgs {
   std::string map;
   std::string models = PARKLOC_MODEL_DIR;
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
-  std::optional<std::string> floor_detector;  // unset: the fine-tuned one in `models`
+  std::string floor_detector;  // '', 'tuned' or a path (floorDetectorPath)
   int det_side = 960;
   std::string direction = "classifier";
   bool no_refine = false;
@@ -37,7 +37,7 @@ void run(const OcrArgs& args) {
   ocr::PpOcrOptions options;
   options.models = ocr::PpOcrModelPaths::inDirectory(args.models);
   options.models.classifier = args.classifier;
-  if (args.floor_detector) options.models.floor_detection = *args.floor_detector;
+  options.models.floor_detection = app::floorDetectorPath(args.floor_detector, args.models);
   options.detection_max_side = args.det_side;
   options.direction =
       args.direction == "both" ? ocr::DirectionMode::kDecodeBoth : ocr::DirectionMode::kClassifier;
@@ -95,8 +95,8 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--classifier", args->classifier, "Text classifier (YAML); '' for none")
       ->capture_default_str();
   cmd->add_option("--floor-detector", args->floor_detector,
-                  "Detector for the floor view (ONNX); '' for PaddleOCR's own (default: the "
-                  "fine-tuned one in --models)");
+                  "Detector for the floor view: '' PaddleOCR's own (default), 'tuned' the one "
+                  "parkloc fine-tuned (in --models), or an ONNX file");
   cmd->add_option("--det-side", args->det_side, "Detection input: longer side in pixels")
       ->capture_default_str();
   cmd->add_option("--direction", args->direction, "classifier | both")

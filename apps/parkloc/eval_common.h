@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <string>
 
 #include "apps/parkloc/command.h"
@@ -16,10 +15,15 @@
 
 namespace parkloc::app {
 
+// --floor-detector: '' for PaddleOCR's own, 'tuned' for parkloc's in the model folder, or a file.
+inline std::string floorDetectorPath(const std::string& value, const std::string& models) {
+  return value == "tuned" ? ocr::floorDetectorIn(models) : value;
+}
+
 struct SpotterArgs {
   std::string models = PARKLOC_MODEL_DIR;
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
-  std::optional<std::string> floor_detector;  // unset: the one in `models`
+  std::string floor_detector;  // '', 'tuned' or a path (floorDetectorPath)
   ocr::GroundViewOptions floor_view;
   double floor_unclip_ratio = ocr::PpOcrOptions{}.floor_db.unclip_ratio;
 
@@ -29,8 +33,8 @@ struct SpotterArgs {
     cmd->add_option("--classifier", classifier, "Text classifier (YAML); '' for none")
         ->capture_default_str();
     cmd->add_option("--floor-detector", floor_detector,
-                    "Detector for the floor view (ONNX); '' for PaddleOCR's own (default: the "
-                    "fine-tuned one in --models)");
+                    "Detector for the floor view: '' PaddleOCR's own (default), 'tuned' the one "
+                    "parkloc fine-tuned (in --models), or an ONNX file");
     cmd->add_option("--floor-view-far", floor_view.far, "Floor view: metres ahead of a camera")
         ->check(CLI::Range(1.0, 30.0))
         ->capture_default_str();
@@ -52,7 +56,7 @@ struct SpotterArgs {
 inline std::unique_ptr<ocr::TextSpotter> makeSpotter(const SpotterArgs& args) {
   ocr::PpOcrOptions options;
   options.models = ocr::PpOcrModelPaths::inDirectory(args.models);
-  if (args.floor_detector) options.models.floor_detection = *args.floor_detector;
+  options.models.floor_detection = floorDetectorPath(args.floor_detector, args.models);
   options.ground_view = args.floor_view;
   options.floor_db.unclip_ratio = args.floor_unclip_ratio;
   if (!args.classifier.empty() && std::filesystem::exists(args.classifier)) {

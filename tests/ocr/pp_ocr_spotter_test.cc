@@ -157,11 +157,29 @@ TEST(PpOcrSpotterModels, MissingFloorDetectorIsAnInputErrorNamingThePath) {
   }
 }
 
+TEST(PpOcrSpotterModels, TheTunedFloorDetectorReadsFloorTextThroughTheFisheye) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.models.floor_detection = floorDetectorIn(PARKLOC_MODEL_DIR);
+  PpOcrSpotter spotter(options);
+  const auto rig = geometry::defaultRig();
+  const auto* left = rig.find("left");
+  const auto scene = testing::renderFloorText(*left, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
+  SpotRequest request;
+  request.lexicon = {"B2-112", "B2-117", "B1-117", "A023"};
+  request.camera = left;
+  const auto found = spotter.spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].text, "B2-117");
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), 2.0);
+}
+
 // The set-up writes the floor detector from PaddleOCR's with parkloc's tuned tensors: its
 // probability map of the same floor view must differ from the stock detector's.
 TEST(PpOcrSpotterModels, TheFloorDetectorIsNotPaddleOcrsOwn) {
   const auto paths = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
-  const DbDetector stock(paths.detection, {}), floor(paths.floor_detection, {});
+  const DbDetector stock(paths.detection, {}), floor(floorDetectorIn(PARKLOC_MODEL_DIR), {});
   const auto rig = geometry::defaultRig();
   const auto scene =
       testing::renderFloorText(*rig.find("left"), "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);

@@ -13,7 +13,6 @@ namespace parkloc::ocr {
 PpOcrModelPaths PpOcrModelPaths::inDirectory(const std::string& dir) {
   PpOcrModelPaths paths;
   paths.detection = dir + "/ch_PP-OCRv4_det_infer.onnx";
-  paths.floor_detection = dir + "/" + std::string(kFloorDetectorFile);
   paths.recognition = dir + "/ch_PP-OCRv4_rec_infer.onnx";
   paths.direction = dir + "/ch_ppocr_mobile_v2.0_cls_infer.onnx";
   paths.dictionary = dir + "/ppocr_keys_v1.txt";

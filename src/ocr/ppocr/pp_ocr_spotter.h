@@ -19,18 +19,23 @@ namespace parkloc::ocr {
 
 // The fine-tuned floor-view detector's file name in the model folder (scripts/setup.sh).
 inline constexpr const char* kFloorDetectorFile = "parkloc_floor_det.onnx";
+inline std::string floorDetectorIn(const std::string& dir) {
+  return dir + "/" + kFloorDetectorFile;
+}
 
 struct PpOcrModelPaths {
   std::string detection;
-  // The detector run on the floor view: PP-OCRv4's with its neck and head fine-tuned by
-  // parkloc on floor views (tools/detector_tuning, written at set-up); empty: `detection`.
+  // The detector run on the floor view; empty (the default): `detection`. floorDetectorIn()
+  // names PP-OCRv4's with its neck and head fine-tuned by parkloc on floor views
+  // (tools/detector_tuning, written at set-up). It finds more floor numbers but is not the
+  // default: on the blur test drive the pipeline takes wrong fixes from it (docs/OCR.md).
   std::string floor_detection;
   std::string recognition;
   std::string direction;  // empty: decide the direction by decoding both
   std::string dictionary;
   std::string classifier;  // empty: every instance is TextClass::kOther with score 0
 
-  // The PaddleOCR file names inside `dir`, the fine-tuned floor detector, no classifier.
+  // The PaddleOCR file names inside `dir` (and no classifier, no floor detector).
   static PpOcrModelPaths inDirectory(const std::string& dir);
 };
 

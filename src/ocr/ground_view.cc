@@ -41,8 +41,7 @@ GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOption
   const geometry::Rigid3 camera_from_vehicle = camera.vehicle_from_camera.inverse();
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
-      const Eigen::Vector2d g =
-          origin_ + right_ * (c * options.resolution) + toward_ * (r * options.resolution);
+      const Eigen::Vector2d g = groundFromView(cv::Point2f(c, r));
       const auto px =
           camera.model.project(camera_from_vehicle * Eigen::Vector3d(g.x(), g.y(), 0.0));
       map_x_.at<float>(r, c) = px ? static_cast<float>(px->x()) : -1e4f;

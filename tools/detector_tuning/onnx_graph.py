@@ -29,6 +29,8 @@ class OnnxGraph(torch.nn.Module):
         model = onnx.load(model_path)
         graph = model.graph
         self.nodes = [n for n in graph.node if n.op_type != "Constant"]
+        # Attributes decoded once, not on every forward pass of every training step.
+        self.attributes = [_attrs(n) for n in self.nodes]
         self.input_name = graph.input[0].name
         self.output_name = graph.output[0].name
         constants = {}
@@ -80,8 +82,7 @@ class OnnxGraph(torch.nn.Module):
 
     def forward(self, x):
         env = {self.input_name: x}
-        for n in self.nodes:
-            a = _attrs(n)
+        for n, a in zip(self.nodes, self.attributes):
             ins = [self._value(env, i) if i else None for i in n.input]
             op = n.op_type
             if op == "Conv":

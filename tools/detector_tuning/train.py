@@ -113,7 +113,6 @@ def instance_recall(net, samples, threshold=0.3):
     with torch.no_grad():
         for image, care, dont in samples:
             p = net(torch.from_numpy(normalise(image))[None])[0, 0].numpy()
-            target, weight = probability_targets(p.shape, care, dont)
             for q in care:
                 t, _ = probability_targets(p.shape, [q], [])
                 if t.sum() < 1:

@@ -45,6 +45,7 @@ void runEvalOcr(const EvalArgs& a) {
                            result.images, sequences.size(), a.split, a.dataset, spotter->name());
   std::cout << eval::tableMarkdown(eval::table3(result, std::nullopt));
   std::cout << eval::tableMarkdown(eval::table3Conditions(result));
+  std::cout << eval::tableMarkdown(eval::table3Heights(result));
   const eval::OcrCounts numbers = result.by_class.count("parking_number")
                                       ? result.by_class.at("parking_number")
                                       : eval::OcrCounts{};

@@ -20,12 +20,20 @@ inline std::string floorDetectorPath(const std::string& value, const std::string
   return value == "tuned" ? ocr::floorDetectorIn(models) : value;
 }
 
+// --recognizer: '' for PaddleOCR's own, 'tuned' for parkloc's in the model folder, or a file.
+inline std::string recognizerPath(const std::string& value, const std::string& models) {
+  if (value.empty()) return ocr::PpOcrModelPaths::inDirectory(models).recognition;
+  return value == "tuned" ? ocr::tunedRecognizerIn(models) : value;
+}
+
 struct SpotterArgs {
   std::string models = PARKLOC_MODEL_DIR;
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
   std::string floor_detector;  // '', 'tuned' or a path (floorDetectorPath)
+  std::string recognizer;      // '', 'tuned' or a path (recognizerPath)
   ocr::GroundViewOptions floor_view;
   double floor_unclip_ratio = ocr::PpOcrOptions{}.floor_db.unclip_ratio;
+  std::string reading_alphabet = ocr::PpOcrOptions{}.reading_alphabet;
 
   void addTo(CLI::App* cmd) {
     cmd->add_option("--models", models, "Folder with the PP-OCRv4 ONNX models")
@@ -35,6 +43,9 @@ struct SpotterArgs {
     cmd->add_option("--floor-detector", floor_detector,
                     "Detector for the floor view: '' PaddleOCR's own (default), 'tuned' the one "
                     "parkloc fine-tuned (in --models), or an ONNX file");
+    cmd->add_option("--recognizer", recognizer,
+                    "Recognizer: '' PaddleOCR's own (default), 'tuned' the one parkloc "
+                    "fine-tuned (in --models), or an ONNX file");
     cmd->add_option("--floor-view-far", floor_view.far, "Floor view: metres ahead of a camera")
         ->check(CLI::Range(1.0, 30.0))
         ->capture_default_str();
@@ -45,6 +56,9 @@ struct SpotterArgs {
     cmd->add_option("--floor-unclip-ratio", floor_unclip_ratio,
                     "Box growth of the fine-tuned floor detector (DB unclip ratio)")
         ->check(CLI::Range(1.0, 4.0))
+        ->capture_default_str();
+    cmd->add_option("--reading-alphabet", reading_alphabet,
+                    "Characters of a free reading besides the lexicon's ('' for all 6625)")
         ->capture_default_str();
     cmd->add_option("--floor-view-resolution", floor_view.resolution,
                     "Floor view: metres per pixel")
@@ -57,8 +71,10 @@ inline std::unique_ptr<ocr::TextSpotter> makeSpotter(const SpotterArgs& args) {
   ocr::PpOcrOptions options;
   options.models = ocr::PpOcrModelPaths::inDirectory(args.models);
   options.models.floor_detection = floorDetectorPath(args.floor_detector, args.models);
+  options.models.recognition = recognizerPath(args.recognizer, args.models);
   options.ground_view = args.floor_view;
   options.floor_db.unclip_ratio = args.floor_unclip_ratio;
+  options.reading_alphabet = args.reading_alphabet;
   if (!args.classifier.empty() && std::filesystem::exists(args.classifier)) {
     options.models.classifier = args.classifier;
   }

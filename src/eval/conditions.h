@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "io/sequence_conditions.h"
+
 namespace parkloc::eval {
 
 // Subset names, in the order the paper's Table 8 lists them.
@@ -16,12 +18,8 @@ inline const std::vector<std::string>& conditionNames() {
 }
 std::string conditionTitle(const std::string& name);  // "weak_light" -> "Weak light"
 
-// Sequence-level conditions from the text of meta.json: its "condition" (or "conditions")
-// entry as a string ("weak_light", "bright+blur"), a list of strings, or an object such as
-// {"light": "weak", "blur": true}. Names are normalised (weak / dim / dark -> weak_light,
-// fuzzy / motion_blur -> blur). Throws InputError for malformed JSON.
-std::vector<std::string> sequenceConditions(const std::string& meta_json,
-                                            const std::string& source_name = "meta.json");
+// Sequence-level conditions of meta.json (io/sequence_conditions.h), in these names.
+using io::sequenceConditions;
 
 // The rotation subset of a text whose reading direction is at `rotation_deg` in the image,
 // with the simulator's bins (sim/dataset_writer.h): |rotation| in [30, 60) is "rot45",

@@ -488,6 +488,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     report.ocr = own_ocr_evaluator.result();
     report.tables.push_back(table3(own_ocr_evaluator.result(), std::nullopt));
     report.tables.push_back(table3Conditions(own_ocr_evaluator.result()));
+    report.tables.push_back(table3Heights(own_ocr_evaluator.result()));
     report.notes.push_back(fmt::format(
         "OCR figures from the {} camera images the parkloc pipeline spotted on the full frame "
         "(map-guided frames left out).",
@@ -497,6 +498,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     report.ocr = ocr_evaluator.result();
     report.tables.push_back(table3(ocr_evaluator.result(), afm_counts));
     report.tables.push_back(table3Conditions(ocr_evaluator.result()));
+    report.tables.push_back(table3Heights(ocr_evaluator.result()));
   }
   {
     std::vector<AblationRow> rows;

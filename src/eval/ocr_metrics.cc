@@ -35,6 +35,25 @@ OcrCounts& OcrCounts::operator+=(const OcrCounts& o) {
   return *this;
 }
 
+double apparentHeightPx(const Quad& q) {
+  const cv::Point2f d1 = q[2] - q[0], d2 = q[3] - q[1];
+  const double area = 0.5 * std::abs(static_cast<double>(d1.x) * d2.y - static_cast<double>(d1.y) * d2.x);
+  const double length = 0.5 * (cv::norm(q[1] - q[0]) + cv::norm(q[2] - q[3]));
+  return length > 0.0 ? area / length : 0.0;
+}
+
+const std::vector<std::string>& heightBins() {
+  static const std::vector<std::string> kBins = {"under 8 px", "8-12 px", "12-16 px", "16-24 px",
+                                                 "24 px and more"};
+  return kBins;
+}
+
+const std::string& heightBin(double h) {
+  const auto& bins = heightBins();
+  const size_t i = h < 8.0 ? 0 : h < 12.0 ? 1 : h < 16.0 ? 2 : h < 24.0 ? 3 : 4;
+  return bins[i];
+}
+
 double readingAngleDeg(const Quad& polygon) {
   // Mid-point of the left edge to mid-point of the right edge: the reading direction.
   const cv::Point2d left = 0.5 * (cv::Point2d(polygon[0]) + cv::Point2d(polygon[3]));
@@ -62,6 +81,8 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
     for (const std::string& c : image_conditions) out.push_back(&result_.by_condition[c]);
     const double angle = rotation_deg ? *rotation_deg : readingAngleDeg(polygon);
     if (const auto rot = rotationSubset(angle)) out.push_back(&result_.by_condition[*rot]);
+    if (cls == map::TextClass::kParkingNumber)
+      out.push_back(&result_.parking_numbers_by_height[heightBin(apparentHeightPx(polygon))]);
     return out;
   };
 

@@ -46,6 +46,9 @@ struct OcrEvaluation {
   OcrCounts overall;
   std::map<std::string, OcrCounts> by_class;      // "parking_number", "pillar", "other"
   std::map<std::string, OcrCounts> by_condition;  // names of conditionNames()
+  // Parking numbers by apparent height in the image (heightBin): what the size of a
+  // number costs, since the simulator labels text as legible from 8 px up.
+  std::map<std::string, OcrCounts> parking_numbers_by_height;
   size_t images = 0;
   double spotting_seconds = 0.0;  // time spent in the engine, for images per second
   double imagesPerSecond() const {
@@ -59,6 +62,15 @@ struct OcrEvaluationOptions {
   // less than half occluded).
   double dont_care_occlusion = 0.5;
 };
+
+// Apparent height of a text polygon in pixels: its area over its reading length (a text
+// seen at a grazing angle is a thin sliver even when its side edges are long), as
+// sim::annotateImage measures legibility.
+double apparentHeightPx(const Quad& polygon);
+// The bins of OcrEvaluation::parking_numbers_by_height, in increasing order, and the bin of
+// a height.
+const std::vector<std::string>& heightBins();
+const std::string& heightBin(double height_px);
 
 // Reading direction of a polygon in the image, degrees in (-180, 180] (0 = left to right),
 // the same convention as io::LabelInstance::rotation_deg.

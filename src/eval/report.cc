@@ -127,6 +127,9 @@ nlohmann::json ocrEvaluationJson(const OcrEvaluation& ocr) {
   o["by_condition"] = nlohmann::json::object();
   for (const auto& [cls, c] : ocr.by_class) o["by_class"][cls] = countsJson(c);
   for (const auto& [name, c] : ocr.by_condition) o["by_condition"][name] = countsJson(c);
+  o["parking_numbers_by_height"] = nlohmann::json::object();
+  for (const auto& [bin, c] : ocr.parking_numbers_by_height)
+    o["parking_numbers_by_height"][bin] = countsJson(c);
   return o;
 }
 

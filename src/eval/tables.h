@@ -34,6 +34,8 @@ struct AnomalyFilterCounts {
 Table table3(const OcrEvaluation& ocr, const std::optional<AnomalyFilterCounts>& afm);
 // OCR metrics per condition subset (the conditions of Table 8 applied to Table 3).
 Table table3Conditions(const OcrEvaluation& ocr);
+// Parking numbers per apparent height bin (OcrEvaluation::parking_numbers_by_height).
+Table table3Heights(const OcrEvaluation& ocr);
 
 struct AblationRow {
   bool afm = false, mcrp = false, mcap = false;

@@ -1,6 +1,7 @@
 #include "ocr/classifier_training.h"
 
 #include "io/sequence.h"
+#include "ocr/training_data_files.h"
 
 namespace parkloc::ocr {
 
@@ -10,15 +11,13 @@ ClassifierSamples collectClassifierSamples(const std::vector<std::string>& seque
   std::vector<cv::Mat> rows;
   for (size_t s = 0; s < sequence_dirs.size(); ++s) {
     const io::Sequence sequence(sequence_dirs[s]);
-    size_t frames = sequence.timestamps().size();
-    if (options.max_frames_per_sequence > 0)
-      frames = std::min(frames, options.max_frames_per_sequence);
-    for (size_t f = 0; f < frames; f += std::max<size_t>(options.frame_stride, 1)) {
+    for (const size_t f : sampledFrames(sequence, options.frame_stride,
+                                        options.max_frames_per_sequence)) {
       for (const auto& camera : sequence.cameras()) {
         const auto labels = sequence.loadLabels(f, camera);
         if (!labels || labels->instances.empty()) continue;
-        const cv::Mat image = sequence.loadImage(f, camera);
-        if (image.empty() || image.type() != CV_8UC3) continue;
+        const cv::Mat image = loadBgrImage(sequence, f, camera);
+        if (image.empty()) continue;
         for (const auto& inst : labels->instances) {
           if (inst.occluded_fraction >= options.max_occluded_fraction || inst.truncated ||
               !inst.legible)

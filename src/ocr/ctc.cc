@@ -81,13 +81,33 @@ std::string Charset::decode(const std::vector<int>& classes) const {
   return text;
 }
 
-GreedyResult ctcGreedyDecode(const CtcMatrix& probs) {
+std::vector<int> Charset::readingClasses(const std::string& alphabet) const {
+  std::vector<int> classes;
+  if (alphabet.empty()) return classes;
+  classes.push_back(0);
+  for (const auto& ch : splitUtf8(alphabet)) {
+    const auto encoded = encode(ch);
+    if (!encoded) throw InputError("reading alphabet: character '" + ch + "' is not in the recognizer's dictionary");
+    classes.push_back(encoded->front());
+  }
+  std::sort(classes.begin(), classes.end());
+  classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
+  return classes;
+}
+
+GreedyResult ctcGreedyDecode(const CtcMatrix& probs, const std::vector<int>& classes) {
   GreedyResult result;
   int previous = -1;
   double confidence_sum = 0.0;
   for (int t = 0; t < probs.steps; ++t) {
     const float* row = probs.data + static_cast<size_t>(t) * probs.classes;
-    const int best = static_cast<int>(std::max_element(row, row + probs.classes) - row);
+    int best = 0;
+    if (classes.empty()) {
+      best = static_cast<int>(std::max_element(row, row + probs.classes) - row);
+    } else {
+      for (int c : classes)
+        if (c < probs.classes && row[c] > row[best]) best = c;
+    }
     if (best != 0 && best != previous) {
       result.classes.push_back(best);
       confidence_sum += row[best];

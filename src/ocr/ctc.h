@@ -24,6 +24,10 @@ class Charset {
   // The class sequence of a UTF-8 string; empty when a character is not in the set.
   std::optional<std::vector<int>> encode(const std::string& text) const;
   std::string decode(const std::vector<int>& classes) const;
+  // The classes a reading restricted to `alphabet` may use: the blank and each of its
+  // characters that the set has, in class order. An empty alphabet: every class.
+  // Throws InputError naming a character of `alphabet` that the set lacks.
+  std::vector<int> readingClasses(const std::string& alphabet) const;
 
  private:
   std::vector<std::string> characters_;
@@ -47,8 +51,12 @@ struct GreedyResult {
   float mean_confidence = 0.f;
 };
 
-// Best path: the most probable class per step, repeats merged, blanks dropped.
-GreedyResult ctcGreedyDecode(const CtcMatrix& probs);
+// Best path: the most probable class per step, repeats merged, blanks dropped. With
+// `classes` (Charset::readingClasses, the blank included), the most probable of those only:
+// a garage's texts use a few dozen of the recognizer's 6625 classes, and a glyph the
+// renderer or a worn paint blurs is then read as the nearest of those, not as a Chinese
+// character or a lower-case look-alike.
+GreedyResult ctcGreedyDecode(const CtcMatrix& probs, const std::vector<int>& classes = {});
 
 // log P(labels | probs): the CTC forward algorithm over the blank-extended label sequence.
 // -infinity when no alignment fits (more labels than steps allow).

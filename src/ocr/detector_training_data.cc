@@ -6,12 +6,12 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "common/error.h"
 #include "io/sequence.h"
+#include "io/sequence_conditions.h"
+#include "ocr/training_data_files.h"
 
 namespace parkloc::ocr {
 namespace {
@@ -78,40 +78,14 @@ std::vector<ViewText> viewTexts(const GroundView& view, const io::ImageLabels& l
   return out;
 }
 
+// The sequence's conditions joined by '+' ("blur+bright"); "none" when it names none.
 std::string conditionOf(const io::Sequence& sequence) {
-  const std::string where = (fs::path(sequence.dir()) / "meta.json").string();
-  nlohmann::json meta;
-  try {
-    meta = nlohmann::json::parse(sequence.metaJson());
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(where + ": malformed JSON: " + e.what());
-  }
-  if (!meta.is_object() || !meta.contains("condition")) return "unknown";
-  if (!meta["condition"].is_string())
-    throw InputError(where + ": field 'condition': expected a string, got " +
-                     meta["condition"].dump());
-  return meta["condition"].get<std::string>();
-}
-
-std::string sequenceName(const std::string& dir) {
-  const fs::path p = fs::path(dir).lexically_normal();
-  return p.has_filename() ? p.filename().string() : p.parent_path().filename().string();
-}
-
-void createDirectory(const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw IoError(dir.string() + ": cannot create folder (" + ec.message() + ")");
-}
-
-void writeImage(const fs::path& path, const cv::Mat& image) {
-  bool ok = false;
-  try {
-    ok = cv::imwrite(path.string(), image);
-  } catch (const cv::Exception& e) {
-    throw IoError(path.string() + ": cannot write image (" + e.what() + ")");
-  }
-  if (!ok) throw IoError(path.string() + ": cannot write image");
+  const auto names =
+      io::sequenceConditions(sequence.metaJson(), sequence.dir() + "/meta.json");
+  if (names.empty()) return "none";
+  std::string joined;
+  for (const auto& n : names) joined += (joined.empty() ? "" : "+") + n;
+  return joined;
 }
 
 void writeViewTexts(const fs::path& path, const std::vector<ViewText>& texts) {
@@ -160,17 +134,13 @@ DetectorDataStats writeDetectorTrainingData(const std::vector<std::string>& sequ
     for (const auto& camera : sequence.cameras())
       if (const auto* rig_camera = sequence.rig().find(camera))
         views.emplace_back(camera, GroundView(*rig_camera, options.view));
-    size_t frames = sequence.timestamps().size();
-    if (options.max_frames_per_sequence > 0)
-      frames = std::min(frames, options.max_frames_per_sequence);
-    for (size_t f = 0; f < frames; f += std::max<size_t>(options.frame_stride, 1)) {
+    for (const size_t f : sampledFrames(sequence, options.frame_stride,
+                                        options.max_frames_per_sequence)) {
       for (const auto& [camera, view] : views) {
         const auto labels = sequence.loadLabels(f, camera);
         if (!labels) continue;  // nothing to learn from an unlabelled image
-        cv::Mat raw = sequence.loadImage(f, camera);
+        const cv::Mat raw = loadBgrImage(sequence, f, camera);
         if (raw.empty()) continue;
-        if (raw.channels() == 1) cv::cvtColor(raw, raw, cv::COLOR_GRAY2BGR);
-        if (raw.channels() == 4) cv::cvtColor(raw, raw, cv::COLOR_BGRA2BGR);
         const std::string stem =
             fmt::format("{}_{}_{}", name, camera, io::timestampStem(sequence.timestamps()[f]));
         const std::string image_rel = "images/" + stem + ".png";

@@ -4,7 +4,8 @@
 // simulate` folders), for every n-th frame set and every camera, writes
 //   OUT/images/<sequence>_<camera>_<stem>.png   the ground view of the raw image (BGR)
 //   OUT/labels/<sequence>_<camera>_<stem>.txt   x1,y1,x2,y2,x3,y3,x4,y4,care,class,text
-//   OUT/index.txt                               <image> <labels> <condition>, paths from OUT
+//   OUT/index.txt                               <image> <labels> <conditions>, paths from OUT
+// (conditions: io::sequenceConditions joined by "+", "none" when there are none)
 // Label corners are view pixels in the labels' order (TL, TR, BR, BL of the text as it
 // reads), one decimal; class is the dataset's id (0 pillar, 1 parking number, 2 other); commas
 // in the text become spaces. care 1: floor text, legible, less than half occluded, not

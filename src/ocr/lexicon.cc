@@ -30,10 +30,11 @@ bool sameUpToLookAlikes(const std::string& a, const std::string& b) {
 
 LexiconDecoding decodeWithLexicon(const CtcMatrix& probs, const Charset& charset,
                                   const std::vector<std::string>& candidates,
-                                  const LexiconOptions& options) {
+                                  const LexiconOptions& options,
+                                  const std::vector<int>& reading_classes) {
   constexpr double kNegInf = -std::numeric_limits<double>::infinity();
   LexiconDecoding out;
-  const GreedyResult greedy = ctcGreedyDecode(probs);
+  const GreedyResult greedy = ctcGreedyDecode(probs, reading_classes);
   out.raw_text = charset.decode(greedy.classes);
   out.raw_confidence = greedy.mean_confidence;
   out.raw_log_prob = ctcLogProbability(probs, greedy.classes);

@@ -44,9 +44,11 @@ struct LexiconDecoding {
   bool matched = false;
 };
 
-// Candidates whose characters the charset cannot encode are skipped.
+// Candidates whose characters the charset cannot encode are skipped. `reading_classes`
+// restricts the greedy reading (ctcGreedyDecode); empty: every class.
 LexiconDecoding decodeWithLexicon(const CtcMatrix& probs, const Charset& charset,
                                   const std::vector<std::string>& candidates,
-                                  const LexiconOptions& options = {});
+                                  const LexiconOptions& options = {},
+                                  const std::vector<int>& reading_classes = {});
 
 }  // namespace parkloc::ocr

@@ -77,6 +77,38 @@ TEST(OcrMetrics, CountsOfOneHandMadeImage) {
   EXPECT_DOUBLE_EQ(r.imagesPerSecond(), 2.0);
 }
 
+TEST(OcrMetrics, ApparentHeightIsAreaOverReadingLength) {
+  // A 100 x 10 rectangle, and a parallelogram with long slanted sides but 5 px between its
+  // reading edges: the sliver a grazing view makes.
+  EXPECT_NEAR(apparentHeightPx({cv::Point2f(0, 0), {100, 0}, {100, 10}, {0, 10}}), 10.0, 1e-9);
+  EXPECT_NEAR(apparentHeightPx({cv::Point2f(0, 0), {100, 0}, {160, 5}, {60, 5}}), 5.0, 1e-9);
+  EXPECT_EQ(heightBin(7.9), "under 8 px");
+  EXPECT_EQ(heightBin(8.0), "8-12 px");
+  EXPECT_EQ(heightBin(23.9), "16-24 px");
+  EXPECT_EQ(heightBin(40.0), "24 px and more");
+}
+
+TEST(OcrMetrics, ParkingNumbersAreCountedByHeight) {
+  io::ImageLabels truth;
+  truth.instances = {
+      label(0, 0, 100, 10, "B2-117", TextClass::kParkingNumber),   // 10 px, found
+      label(200, 0, 300, 30, "B2-118", TextClass::kParkingNumber), // 30 px, missed
+      label(400, 0, 500, 30, "B2", TextClass::kPillar),            // not a number
+  };
+  const std::vector<ocr::TextInstance> detections = {
+      detection(0, 0, 100, 10, "B2-117", "B2-117", TextClass::kParkingNumber),
+      detection(400, 0, 500, 30, "B2", "B2", TextClass::kPillar),
+  };
+  OcrEvaluator evaluator;
+  evaluator.add(truth, detections, {});
+  const auto& bins = evaluator.result().parking_numbers_by_height;
+  ASSERT_EQ(bins.size(), 2u);
+  EXPECT_EQ(bins.at("8-12 px").tp, 1u);
+  EXPECT_EQ(bins.at("8-12 px").truths, 1u);
+  EXPECT_EQ(bins.at("24 px and more").fn, 1u);
+  EXPECT_EQ(bins.at("24 px and more").tp, 0u);
+}
+
 TEST(OcrMetrics, ReadingAngleFollowsTheLabelConvention) {
   Quad upright = {cv::Point2f(0, 0), cv::Point2f(10, 0), cv::Point2f(10, 4), cv::Point2f(0, 4)};
   EXPECT_NEAR(readingAngleDeg(upright), 0.0, 1e-9);

@@ -6,6 +6,7 @@
 #include <functional>
 #include <random>
 
+#include "common/error.h"
 #include "ocr/lexicon.h"
 
 namespace parkloc::ocr {
@@ -98,6 +99,25 @@ TEST(CtcGreedy, MergesRepeatsAndDropsBlanks) {
   const GreedyResult r = ctcGreedyDecode({probs.data(), 7, 3});
   EXPECT_EQ(r.classes, (std::vector<int>{1, 1, 2}));
   EXPECT_NEAR(r.mean_confidence, 0.8f, 1e-6);
+}
+
+TEST(CtcGreedy, RestrictedToReadingClassesTakesTheBestOfThose) {
+  // Step 0: class 3 ('o') is the most probable, class 2 ('0') the best of the reading classes.
+  const Charset charset({"A", "0", "o"});
+  const std::vector<float> probs = {0.1f, 0.1f, 0.3f, 0.5f,   // o over 0
+                                    0.7f, 0.1f, 0.1f, 0.1f};  // blank
+  const auto classes = charset.readingClasses("A0");
+  EXPECT_EQ(classes, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(charset.decode(ctcGreedyDecode({probs.data(), 2, 4}).classes), "o");
+  const GreedyResult r = ctcGreedyDecode({probs.data(), 2, 4}, classes);
+  EXPECT_EQ(charset.decode(r.classes), "0");
+  EXPECT_NEAR(r.mean_confidence, 0.3f, 1e-6);
+}
+
+TEST(Charset, ReadingClassesOfAnEmptyAlphabetAreAllAndAForeignCharacterIsAnError) {
+  const Charset charset({"A", "0"});
+  EXPECT_TRUE(charset.readingClasses("").empty());
+  EXPECT_THROW(charset.readingClasses("A#"), InputError);
 }
 
 TEST(Charset, EncodesAndDecodesUtf8) {

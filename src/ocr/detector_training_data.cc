@@ -103,7 +103,6 @@ void checkViewOptions(const GroundViewOptions& v) {
     return InputError(fmt::format("ground view option '{}' = {}: {}", field, value, why));
   };
   if (!(v.resolution > 0.0)) throw bad("resolution", v.resolution, "must be positive");
-  if (!(v.near >= 0.0)) throw bad("near", v.near, "must not be negative");
   if (!(v.far > v.near)) throw bad("far", v.far, "must exceed near");
   if (!(v.half_width > 0.0)) throw bad("half_width", v.half_width, "must be positive");
   // The view's side is at most the extent along and across the heading together.

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <functional>
 #include <random>
 
@@ -131,6 +132,45 @@ TEST_F(PipelineTest, AFixWhoseCornersFitWorseThanThePixelNoiseCountsForLess) {
   EXPECT_GT(noisy(0, 0), 8.0 * exact(0, 0));
   EXPECT_GT(noisy(1, 1), 8.0 * exact(1, 1));
   EXPECT_GT(noisy(2, 2), 8.0 * exact(2, 2));
+}
+
+TEST_F(PipelineTest, AnUncertainFirstFixFromOneTextWaitsForMoreTexts) {
+  // Frame 0 sees a single parking number, its corners 2 px off: its fix is over half a metre
+  // uncertain. The filter must not start from it, unless the gate is switched off.
+  const Drive drive;
+  auto first = [&](double max_sigma) {
+    std::mt19937 fixed(9);
+    std::swap(rng, fixed);
+    spot.pixel_noise = 2.0;
+    PipelineOptions options;
+    options.first_fix_max_sigma_m = max_sigma;
+    Pipeline pipeline(rig, map, options);
+    return pipeline.process(frame(drive, 0, [](std::vector<CameraInput>& cameras) {
+      // Keep the first parking number, in the camera that saw it, and nothing else.
+      const ocr::TextInstance* number = firstParkingNumber(cameras);
+      ASSERT_NE(number, nullptr);
+      for (auto& c : cameras) {
+        std::vector<ocr::TextInstance> kept;
+        for (const auto& t : *c.instances)
+          if (&t == number) kept.push_back(t);
+        *c.instances = std::move(kept);
+      }
+    }));
+  };
+  const FrameResult ungated = first(0.0);
+  ASSERT_TRUE(ungated.has_pose);
+  ASSERT_TRUE(ungated.measurement_covariance.has_value());
+  const Eigen::Matrix2d position = ungated.measurement_covariance->topLeftCorner<2, 2>();
+  const double sigma = std::sqrt(
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(position).eigenvalues().maxCoeff());
+  ASSERT_GT(sigma, 0.3);  // the premise: one noisy text is an uncertain fix
+
+  const FrameResult gated = first(0.3);
+  EXPECT_FALSE(gated.has_pose);
+  EXPECT_TRUE(gated.measurement_covariance.has_value());  // reported, not fused
+  bool warned = false;
+  for (const auto& w : gated.warnings) warned |= w.find("first fix too uncertain") != std::string::npos;
+  EXPECT_TRUE(warned);
 }
 
 TEST_F(PipelineTest, DeadReckonsWithGrowingCovarianceWhenNothingIsSeen) {

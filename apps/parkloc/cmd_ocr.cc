@@ -23,7 +23,7 @@ struct OcrArgs {
   std::string map;
   std::string models = PARKLOC_MODEL_DIR;
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
-  std::string floor_detector;  // '', 'tuned' or a path (floorDetectorPath)
+  std::string floor_detector = "tuned";  // '', 'tuned' or a path (floorDetectorPath)
   std::string recognizer;      // '', 'tuned' or a path (recognizerPath)
   int det_side = 960;
   std::string direction = "classifier";
@@ -97,8 +97,9 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--classifier", args->classifier, "Text classifier (YAML); '' for none")
       ->capture_default_str();
   cmd->add_option("--floor-detector", args->floor_detector,
-                  "Detector for the floor view: '' PaddleOCR's own (default), 'tuned' the one "
-                  "parkloc fine-tuned (in --models), or an ONNX file");
+                  "Detector for the floor view: 'tuned' the one parkloc fine-tuned (in --models), "
+                  "'' PaddleOCR's own, or an ONNX file")
+      ->capture_default_str();
   cmd->add_option("--recognizer", args->recognizer,
                   "Recognizer: '' PaddleOCR's own (default), 'tuned' the one parkloc "
                   "fine-tuned (in --models), or an ONNX file");

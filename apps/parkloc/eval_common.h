@@ -29,7 +29,7 @@ inline std::string recognizerPath(const std::string& value, const std::string& m
 struct SpotterArgs {
   std::string models = PARKLOC_MODEL_DIR;
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
-  std::string floor_detector;  // '', 'tuned' or a path (floorDetectorPath)
+  std::string floor_detector = "tuned";  // '', 'tuned' or a path (floorDetectorPath)
   std::string recognizer;      // '', 'tuned' or a path (recognizerPath)
   ocr::GroundViewOptions floor_view;
   double floor_unclip_ratio = ocr::PpOcrOptions{}.floor_db.unclip_ratio;
@@ -41,8 +41,9 @@ struct SpotterArgs {
     cmd->add_option("--classifier", classifier, "Text classifier (YAML); '' for none")
         ->capture_default_str();
     cmd->add_option("--floor-detector", floor_detector,
-                    "Detector for the floor view: '' PaddleOCR's own (default), 'tuned' the one "
-                    "parkloc fine-tuned (in --models), or an ONNX file");
+                    "Detector for the floor view: 'tuned' the one parkloc fine-tuned (in --models), "
+                    "'' PaddleOCR's own, or an ONNX file")
+        ->capture_default_str();
     cmd->add_option("--recognizer", recognizer,
                     "Recognizer: '' PaddleOCR's own (default), 'tuned' the one parkloc "
                     "fine-tuned (in --models), or an ONNX file");

@@ -98,9 +98,10 @@ struct PipelineOptions {
   double lost_position_sigma_m = 2.0;   // 1-sigma position beyond which the filter is lost
   int reinit_after_rejected_fixes = 3;  // consecutive solver fixes outside the gate -> re-init
   // A first fix (or a re-localisation) starts the filter only when its 1-sigma position is
-  // within this: a fix from one distant, thin text that may be misread (one misplaced corner
-  // moves it by decimetres) waits for more texts in the search window instead. 0: any fix.
-  double first_fix_max_sigma_m = 0.3;
+  // within this, the error no frame may exceed (#5): a fix from one distant, thin text that
+  // may be misread (one misplaced corner moves it by decimetres) waits for more texts in the
+  // search window instead. 0: any fix.
+  double first_fix_max_sigma_m = 0.5;
 
   // Added after the first version (additive).
   // A solver fix is fused only within this squared Mahalanobis distance of the prediction

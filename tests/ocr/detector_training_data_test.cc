@@ -122,7 +122,7 @@ TEST(DetectorTrainingData, RejectsBadViewOptions) {
   options.view.resolution = 1e-4;  // a view of 180000 px
   EXPECT_THROW(writeDetectorTrainingData({}, options), InputError);
   options.view.resolution = 0.015;
-  options.view.far = -1.0;  // before near
+  options.view.far = options.view.near - 0.5;  // before near
   EXPECT_THROW(writeDetectorTrainingData({}, options), InputError);
   options.view.near = -2.0;
   options.view.far = -3.0;

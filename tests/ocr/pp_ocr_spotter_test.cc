@@ -175,6 +175,38 @@ TEST(PpOcrSpotterModels, TheTunedFloorDetectorReadsFloorTextThroughTheFisheye) {
   EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), 2.0);
 }
 
+TEST(PpOcrSpotterModels, TheTunedRecognizerReadsFloorTextThroughTheFisheye) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.models.recognition = tunedRecognizerIn(PARKLOC_MODEL_DIR);
+  PpOcrSpotter spotter(options);
+  const auto rig = geometry::defaultRig();
+  const auto* left = rig.find("left");
+  const auto scene = testing::renderFloorText(*left, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
+  SpotRequest request;
+  request.lexicon = {"B2-112", "B2-117", "B1-117", "A023"};
+  request.camera = left;
+  const auto found = spotter.spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].text, "B2-117");
+  EXPECT_EQ(found[0].raw_text, "B2-117");
+  EXPECT_TRUE(found[0].lexicon_match);
+}
+
+// The set-up writes the recognizer from PaddleOCR's with parkloc's tuned head: its output
+// for the same crop must differ from the stock recognizer's.
+TEST(PpOcrSpotterModels, TheTunedRecognizerIsNotPaddleOcrsOwn) {
+  const auto paths = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  const CtcRecognizer stock(paths.recognition, {}), tuned(tunedRecognizerIn(PARKLOC_MODEL_DIR), {});
+  cv::Mat crop(CtcRecognizer::kHeight, 160, CV_8UC3, cv::Scalar(90, 90, 90));
+  cv::putText(crop, "B2-117", {8, 38}, cv::FONT_HERSHEY_SIMPLEX, 1.2, cv::Scalar(220, 220, 220), 3);
+  const auto a = stock.recognize({crop}, 1), b = tuned.recognize({crop}, 1);
+  ASSERT_EQ(a[0].probs.size(), b[0].probs.size());
+  double diff = 0.0;
+  for (size_t i = 0; i < a[0].probs.size(); ++i) diff += std::abs(a[0].probs[i] - b[0].probs[i]);
+  EXPECT_GT(diff / a[0].steps, 1e-4);  // the same model gives exactly 0
+}
+
 // The set-up writes the floor detector from PaddleOCR's with parkloc's tuned tensors: its
 // probability map of the same floor view must differ from the stock detector's.
 TEST(PpOcrSpotterModels, TheFloorDetectorIsNotPaddleOcrsOwn) {

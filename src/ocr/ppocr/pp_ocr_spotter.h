@@ -22,8 +22,9 @@ inline constexpr const char* kFloorDetectorFile = "parkloc_floor_det.onnx";
 inline std::string floorDetectorIn(const std::string& dir) {
   return dir + "/" + kFloorDetectorFile;
 }
-// The recognizer with its last layers fine-tuned on the simulator's text crops
-// (tools/recognizer_tuning, written at set-up).
+// The recognizer with its head fine-tuned on the simulator's text crops
+// (tools/recognizer_tuning, written at set-up); an experiment, not the default
+// (--recognizer tuned; docs/OCR.md).
 inline constexpr const char* kTunedRecognizerFile = "parkloc_rec.onnx";
 inline std::string tunedRecognizerIn(const std::string& dir) {
   return dir + "/" + kTunedRecognizerFile;
@@ -31,10 +32,10 @@ inline std::string tunedRecognizerIn(const std::string& dir) {
 
 struct PpOcrModelPaths {
   std::string detection;
-  // The detector run on the floor view; empty (the default): `detection`. floorDetectorIn()
-  // names PP-OCRv4's with its neck and head fine-tuned by parkloc on floor views
-  // (tools/detector_tuning, written at set-up). It finds more floor numbers but is not the
-  // default: on the blur test drive the pipeline takes wrong fixes from it (docs/OCR.md).
+  // The detector run on the floor view; empty: `detection`. floorDetectorIn() names
+  // PP-OCRv4's with its neck and head fine-tuned by parkloc on floor views
+  // (tools/detector_tuning, written at set-up), which the parkloc commands use by default
+  // (--floor-detector): it finds more floor numbers (docs/OCR.md).
   std::string floor_detection;
   std::string recognition;
   std::string direction;  // empty: decide the direction by decoding both

@@ -508,17 +508,19 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
     result.solver_iterations = s.iterations;
     result.solver_converged = s.converged;
     markSolve(inside, s, result);
-    const double sigma = s.ok ? positionSigma(fixCovariance(s, options)) : 0.0;
-    const bool certain = options.first_fix_max_sigma_m <= 0.0 || sigma <= options.first_fix_max_sigma_m;
+    if (s.ok) {
+      // Reported whether or not it starts the filter.
+      result.measurement = s.pose;
+      result.measurement_covariance = fixCovariance(s, options);
+    }
+    const double sigma = s.ok ? positionSigma(*result.measurement_covariance) : 0.0;
+    const bool certain =
+        options.first_fix_max_sigma_m <= 0.0 || sigma <= options.first_fix_max_sigma_m;
     if (s.ok && certain) {
       search_window.clear();
       fix = s;
-      result.measurement = s.pose;
-      result.measurement_covariance = fixCovariance(s, options);
     } else if (s.ok) {
       search_window.add(inside);
-      result.measurement = s.pose;
-      result.measurement_covariance = fixCovariance(s, options);
       result.warnings.push_back(fmt::format(
           "first fix too uncertain ({:.2f} m, 1 sigma): waiting for more texts", sigma));
     } else {

@@ -3,20 +3,10 @@
 #include <cmath>
 
 #include "eval/conditions.h"
+#include "geometry/text_polygon.h"
+#include "io/polygon_points.h"
 
 namespace parkloc::eval {
-namespace {
-
-Quad toQuad(const std::array<Eigen::Vector2d, 4>& polygon) {
-  Quad q;
-  for (size_t i = 0; i < 4; ++i) {
-    q[i] = cv::Point2f(static_cast<float>(polygon[i].x()), static_cast<float>(polygon[i].y()));
-  }
-  return q;
-}
-
-}  // namespace
-
 double OcrCounts::fMeasure() const {
   const double p = precision(), r = recall();
   return p + r > 0.0 ? 2.0 * p * r / (p + r) : 0.0;
@@ -33,13 +23,6 @@ OcrCounts& OcrCounts::operator+=(const OcrCounts& o) {
   recognized += o.recognized;
   classified += o.classified;
   return *this;
-}
-
-double apparentHeightPx(const Quad& q) {
-  const cv::Point2f d1 = q[2] - q[0], d2 = q[3] - q[1];
-  const double area = 0.5 * std::abs(static_cast<double>(d1.x) * d2.y - static_cast<double>(d1.y) * d2.x);
-  const double length = 0.5 * (cv::norm(q[1] - q[0]) + cv::norm(q[2] - q[3]));
-  return length > 0.0 ? area / length : 0.0;
 }
 
 const std::vector<std::string>& heightBins() {
@@ -67,7 +50,7 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
   std::vector<Quad> truth_quads, detection_quads;
   std::vector<bool> dont_care;
   for (const io::LabelInstance& instance : truth.instances) {
-    truth_quads.push_back(toQuad(instance.polygon));
+    truth_quads.push_back(io::pointQuad(instance.polygon));
     dont_care.push_back(instance.occluded_fraction >= options_.dont_care_occlusion ||
                         !instance.legible);
   }
@@ -82,7 +65,7 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
     const double angle = rotation_deg ? *rotation_deg : readingAngleDeg(polygon);
     if (const auto rot = rotationSubset(angle)) out.push_back(&result_.by_condition[*rot]);
     if (cls == map::TextClass::kParkingNumber)
-      out.push_back(&result_.parking_numbers_by_height[heightBin(apparentHeightPx(polygon))]);
+      out.push_back(&result_.parking_numbers_by_height[heightBin(geometry::apparentHeightPx(io::textPolygon(polygon)))]);
     return out;
   };
 

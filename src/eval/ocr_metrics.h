@@ -63,12 +63,8 @@ struct OcrEvaluationOptions {
   double dont_care_occlusion = 0.5;
 };
 
-// Apparent height of a text polygon in pixels: its area over its reading length (a text
-// seen at a grazing angle is a thin sliver even when its side edges are long), as
-// sim::annotateImage measures legibility.
-double apparentHeightPx(const Quad& polygon);
 // The bins of OcrEvaluation::parking_numbers_by_height, in increasing order, and the bin of
-// a height.
+// an apparent height (geometry::apparentHeightPx, the simulator's legibility measure).
 const std::vector<std::string>& heightBins();
 const std::string& heightBin(double height_px);
 

@@ -1,5 +1,6 @@
 #include "ocr/classifier_training.h"
 
+#include "io/polygon_points.h"
 #include "io/sequence.h"
 #include "ocr/training_data_files.h"
 
@@ -22,10 +23,7 @@ ClassifierSamples collectClassifierSamples(const std::vector<std::string>& seque
           if (inst.occluded_fraction >= options.max_occluded_fraction || inst.truncated ||
               !inst.legible)
             continue;
-          Quad quad;
-          for (int k = 0; k < 4; ++k)
-            quad[k] = cv::Point2f(static_cast<float>(inst.polygon[k].x()),
-                                  static_cast<float>(inst.polygon[k].y()));
+          const Quad quad = io::pointQuad(inst.polygon);
           if (quadHeight(quad) < 4.f || quadWidth(quad) < 4.f) continue;
           rows.push_back(classifierFeatures(image, quad, inst.text, options.features));
           out.labels.push_back(inst.cls);

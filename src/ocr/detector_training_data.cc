@@ -9,8 +9,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/error.h"
+#include "io/polygon_points.h"
 #include "io/sequence.h"
 #include "io/sequence_conditions.h"
+#include "ocr/quad.h"
 #include "ocr/training_data_files.h"
 
 namespace parkloc::ocr {
@@ -48,10 +50,10 @@ std::vector<ViewText> viewTexts(const GroundView& view, const io::ImageLabels& l
   std::vector<ViewText> out;
   for (const auto& inst : labels.instances) {
     ViewText t;
+    const Quad raw = io::pointQuad(inst.polygon);
     bool mapped = true;
     for (int k = 0; k < 4 && mapped; ++k) {
-      const auto v = view.viewFromRaw(cv::Point2f(static_cast<float>(inst.polygon[k].x()),
-                                                  static_cast<float>(inst.polygon[k].y())));
+      const auto v = view.viewFromRaw(raw[k]);
       if (v) t.corners[k] = *v;
       mapped = v.has_value();
     }

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "common/error.h"
+#include "io/polygon_points.h"
 #include "io/sequence.h"
 #include "ocr/ppocr/pp_ocr_networks.h"
 #include "ocr/quad.h"
@@ -91,10 +92,7 @@ RecognizerDataStats writeRecognizerTrainingData(const std::vector<std::string>& 
             raw = loadBgrImage(sequence, f, camera);
             if (raw.empty()) break;
           }
-          Quad truth;
-          for (int k = 0; k < 4; ++k)
-            truth[k] = cv::Point2f(static_cast<float>(inst.polygon[k].x()),
-                                   static_cast<float>(inst.polygon[k].y()));
+          const Quad truth = io::pointQuad(inst.polygon);
           const auto characters = static_cast<float>(inst.text.size());
           if (quadWidth(truth) < options.min_width_per_char * quadHeight(truth) * characters)
             continue;
@@ -105,7 +103,8 @@ RecognizerDataStats writeRecognizerTrainingData(const std::vector<std::string>& 
           for (int v = 0; v < variants; ++v) {
             // The first variant is the true box, the others as a detector might draw it.
             const Quad quad = v == 0 ? truth : jitteredQuad(truth, options, rng);
-            const cv::Mat crop = rectifiedCrop(raw, quad, CtcRecognizer::kHeight, 16, 480);
+            const cv::Mat crop = rectifiedCrop(raw, quad, CtcRecognizer::kHeight,
+                                             CtcRecognizer::kMinWidth, CtcRecognizer::kMaxWidth);
             const std::string rel = fmt::format("crops/{}_{}.png", stem, n++);
             writeImage(root / rel, crop);
             index << rel << '\t' << inst.text << '\t' << static_cast<int>(inst.cls) << '\n';

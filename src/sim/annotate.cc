@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/text_polygon.h"
+
 namespace parkloc::sim {
 
 bool segmentBlocked(const GarageLevel& level, const Eigen::Vector3d& from,
@@ -57,15 +59,9 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
         poly[k] = *px;
     }
     if (!projectable) continue;
-    // Apparent height: the quadrilateral's area over its reading length (a text seen at a
-    // grazing angle is a thin sliver even when its side edges are long).
-    auto cross2 = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-      return a.x() * b.y() - a.y() * b.x();
-    };
-    const double area = 0.5 * std::abs(cross2(poly[2] - poly[0], poly[3] - poly[1]));
-    const double length = 0.5 * ((poly[1] - poly[0]).norm() + (poly[2] - poly[3]).norm());
-    if (length <= 0.0 || area / length < options.min_labelled_height_px) continue;
-    const bool legible = area / length >= options.min_height_px;
+    const double height = geometry::apparentHeightPx(poly);
+    if (height <= 0.0 || height < options.min_labelled_height_px) continue;
+    const bool legible = height >= options.min_height_px;
     // Sample points on the text: inside the image, and seen or hidden.
     int inside = 0, hidden = 0, total = 0;
     const Eigen::Vector3d r = lm.readingDirection() * lm.width;

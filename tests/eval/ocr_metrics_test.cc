@@ -77,11 +77,7 @@ TEST(OcrMetrics, CountsOfOneHandMadeImage) {
   EXPECT_DOUBLE_EQ(r.imagesPerSecond(), 2.0);
 }
 
-TEST(OcrMetrics, ApparentHeightIsAreaOverReadingLength) {
-  // A 100 x 10 rectangle, and a parallelogram with long slanted sides but 5 px between its
-  // reading edges: the sliver a grazing view makes.
-  EXPECT_NEAR(apparentHeightPx({cv::Point2f(0, 0), {100, 0}, {100, 10}, {0, 10}}), 10.0, 1e-9);
-  EXPECT_NEAR(apparentHeightPx({cv::Point2f(0, 0), {100, 0}, {160, 5}, {60, 5}}), 5.0, 1e-9);
+TEST(OcrMetrics, HeightBinsSplitAtTheirEdges) {
   EXPECT_EQ(heightBin(7.9), "under 8 px");
   EXPECT_EQ(heightBin(8.0), "8-12 px");
   EXPECT_EQ(heightBin(23.9), "16-24 px");

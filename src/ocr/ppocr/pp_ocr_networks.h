@@ -32,6 +32,10 @@ struct RecognitionOutput {
 class CtcRecognizer {
  public:
   static constexpr int kHeight = 48;
+  // The crop widths the spotter reads, and the training crops are exported at: narrower
+  // crops are padded, wider ones squeezed.
+  static constexpr int kMinWidth = 16;
+  static constexpr int kMaxWidth = 480;
   CtcRecognizer(const std::string& model_path, const OnnxOptions& options);
   // Crops are 8-bit BGR, kHeight rows tall; batched by similar width, padded on the right.
   std::vector<RecognitionOutput> recognize(const std::vector<cv::Mat>& crops, int batch_size) const;

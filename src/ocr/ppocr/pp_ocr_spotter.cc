@@ -40,6 +40,19 @@ namespace {
 
 int roundTo32(double v) { return std::max(32, static_cast<int>(std::lround(v / 32.0)) * 32); }
 
+// The classes a free reading may use: those of `base` and of every character of the lexicon
+// that the charset has (a text with a character it lacks cannot be matched anyway). Throws
+// InputError for a character of `base` the charset lacks.
+std::vector<int> freeReadingClasses(const std::string& base,
+                                    const std::vector<std::string>& lexicon,
+                                    const Charset& charset) {
+  std::string alphabet = base;
+  for (const auto& text : lexicon)
+    for (const auto& ch : splitUtf8(text))
+      if (alphabet.find(ch) == std::string::npos && charset.encode(ch)) alphabet += ch;
+  return charset.readingClasses(alphabet);
+}
+
 // One quad to read: where it is, which texts it may be, whether to try it upside down.
 struct ReadJob {
   Quad quad;
@@ -56,7 +69,7 @@ PpOcrSpotter::PpOcrSpotter(const PpOcrOptions& options) : options_(options) {
       new Networks{DbDetector(m.detection, options.onnx), std::nullopt,
                    CtcRecognizer(m.recognition, options.onnx), std::nullopt,
                    Charset::fromDictionaryFile(m.dictionary), TextClassifier()});
-  nets_->charset.readingClasses(options.reading_alphabet);  // throws on a foreign character
+  freeReadingClasses(options.reading_alphabet, {}, nets_->charset);  // a foreign character throws
   if (!m.floor_detection.empty()) nets_->floor_detector.emplace(m.floor_detection, options.onnx);
   if (!m.direction.empty()) nets_->direction.emplace(m.direction, options.onnx);
   if (!m.classifier.empty()) nets_->classifier = TextClassifier::load(m.classifier);
@@ -70,17 +83,6 @@ std::vector<TextInstance> PpOcrSpotter::spot(const cv::Mat& image, const SpotReq
 }
 
 namespace {
-
-// `base` and every character of the lexicon that the charset has (a text with a character
-// it lacks cannot be matched anyway).
-std::string readingAlphabet(const std::string& base, const std::vector<std::string>& lexicon,
-                            const Charset& charset) {
-  std::string alphabet = base;
-  for (const auto& text : lexicon)
-    for (const auto& ch : splitUtf8(text))
-      if (alphabet.find(ch) == std::string::npos && charset.encode(ch)) alphabet += ch;
-  return alphabet;
-}
 
 // Reads every job: rectified crops (and their 180 degree turns where the direction is in
 // doubt) go through the recognizer in batches; each job keeps its better direction.
@@ -106,7 +108,7 @@ std::vector<std::optional<TextInstance>> readJobs(
     const DirectionClassifier* direction, const Charset& charset) {
   std::vector<cv::Mat> upright(jobs.size());
   for (size_t i = 0; i < jobs.size(); ++i)
-    upright[i] = rectifiedCrop(image, jobs[i].quad, CtcRecognizer::kHeight, 16,
+    upright[i] = rectifiedCrop(image, jobs[i].quad, CtcRecognizer::kHeight, CtcRecognizer::kMinWidth,
                                options.recognition_max_width);
 
   // Which directions to decode, per job: bit 0 upright, bit 1 turned.
@@ -157,8 +159,8 @@ std::vector<std::optional<TextInstance>> readJobs(
     if (lexicon == nullptr || lexicon->empty() || options.reading_alphabet.empty()) return {};
     for (const auto& [key, classes] : classes_of)
       if (key == lexicon) return classes;
-    classes_of.emplace_back(lexicon, charset.readingClasses(readingAlphabet(
-                                         options.reading_alphabet, *lexicon, charset)));
+    classes_of.emplace_back(lexicon,
+                            freeReadingClasses(options.reading_alphabet, *lexicon, charset));
     return classes_of.back().second;
   };
   auto decodeAll = [&](const std::vector<cv::Mat>& batch,

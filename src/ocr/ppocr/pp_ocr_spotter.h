@@ -11,6 +11,7 @@
 #include "ocr/ground_view.h"
 #include "ocr/lexicon.h"
 #include "ocr/onnx_model.h"
+#include "ocr/ppocr/pp_ocr_networks.h"
 #include "ocr/text_classifier.h"
 #include "ocr/text_spotter.h"
 #include "ocr/tracked_text_fit.h"
@@ -75,7 +76,7 @@ struct PpOcrOptions {
   GroundViewOptions ground_view;
   // Full-frame detection input: the longer side is scaled to this (multiple of 32).
   int detection_max_side = 960;
-  int recognition_max_width = 480;  // crops are 48 px tall
+  int recognition_max_width = CtcRecognizer::kMaxWidth;  // crops are kHeight px tall
   int recognition_batch = 8;
   DirectionMode direction = DirectionMode::kClassifier;
   float direction_confident = 0.9f;  // classifier probability above which one crop suffices

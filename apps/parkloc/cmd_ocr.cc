@@ -25,6 +25,7 @@ struct OcrArgs {
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
   std::string floor_detector = "tuned";  // '', 'tuned' or a path (floorDetectorPath)
   std::string recognizer;      // '', 'tuned' or a path (recognizerPath)
+  std::string band_detector;   // '', 'tuned' or a path (bandDetectorPath)
   int det_side = 960;
   std::string direction = "classifier";
   bool no_refine = false;
@@ -40,6 +41,7 @@ void run(const OcrArgs& args) {
   options.models.classifier = args.classifier;
   options.models.floor_detection = app::floorDetectorPath(args.floor_detector, args.models);
   options.models.recognition = app::recognizerPath(args.recognizer, args.models);
+  options.models.band_detection = app::bandDetectorPath(args.band_detector, args.models);
   options.detection_max_side = args.det_side;
   options.direction =
       args.direction == "both" ? ocr::DirectionMode::kDecodeBoth : ocr::DirectionMode::kClassifier;
@@ -103,6 +105,9 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--recognizer", args->recognizer,
                   "Recognizer: '' PaddleOCR's own (default), 'tuned' the one parkloc "
                   "fine-tuned (in --models), or an ONNX file");
+  cmd->add_option("--band-detector", args->band_detector,
+                  "With --camera: detector for the raw image's horizon band, '' none (default), "
+                  "'tuned' the one parkloc fine-tuned (in --models), or an ONNX file");
   cmd->add_option("--det-side", args->det_side, "Detection input: longer side in pixels")
       ->capture_default_str();
   cmd->add_option("--direction", args->direction, "classifier | both")

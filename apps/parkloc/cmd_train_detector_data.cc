@@ -18,6 +18,7 @@ struct DetectorDataArgs {
   size_t stride = 1;
   size_t max_frames = 0;
   parkloc::ocr::GroundViewOptions view;
+  std::vector<double> raw_band;  // empty: the floor view
 };
 
 void runDetectorData(const DetectorDataArgs& args) {
@@ -28,6 +29,10 @@ void runDetectorData(const DetectorDataArgs& args) {
   ocr::DetectorDataOptions options;
   options.out_dir = args.out;
   options.view = args.view;
+  if (!args.raw_band.empty()) {
+    options.source = ocr::DetectorSource::kRawBand;
+    options.band = {args.raw_band[0], args.raw_band[1]};
+  }
   options.frame_stride = args.stride;
   options.max_frames_per_sequence = args.max_frames;
   options.progress = [](size_t done, size_t total) {
@@ -60,6 +65,10 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
       ->capture_default_str();
   cmd->add_option("--half-width", args->view.half_width, "View extent to each side (m)")
       ->capture_default_str();
+  cmd->add_option("--raw-band", args->raw_band,
+                  "Export the raw image's horizon band instead of the floor view: its top and "
+                  "bottom as fractions of the image height (e.g. 0.08 0.64)")
+      ->expected(2);
   cmd->callback([args] { runDetectorData(*args); });
 });
 

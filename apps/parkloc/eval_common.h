@@ -20,6 +20,11 @@ inline std::string floorDetectorPath(const std::string& value, const std::string
   return value == "tuned" ? ocr::floorDetectorIn(models) : value;
 }
 
+// --band-detector: '' for none, 'tuned' for parkloc's in the model folder, or a file.
+inline std::string bandDetectorPath(const std::string& value, const std::string& models) {
+  return value == "tuned" ? ocr::bandDetectorIn(models) : value;
+}
+
 // --recognizer: '' for PaddleOCR's own, 'tuned' for parkloc's in the model folder, or a file.
 inline std::string recognizerPath(const std::string& value, const std::string& models) {
   if (value.empty()) return ocr::PpOcrModelPaths::inDirectory(models).recognition;
@@ -31,6 +36,7 @@ struct SpotterArgs {
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
   std::string floor_detector = "tuned";  // '', 'tuned' or a path (floorDetectorPath)
   std::string recognizer;      // '', 'tuned' or a path (recognizerPath)
+  std::string band_detector;   // '', 'tuned' or a path (bandDetectorPath)
   ocr::GroundViewOptions floor_view;
   double floor_unclip_ratio = ocr::PpOcrOptions{}.floor_db.unclip_ratio;
   std::string reading_alphabet = ocr::PpOcrOptions{}.reading_alphabet;
@@ -44,6 +50,10 @@ struct SpotterArgs {
                     "Detector for the floor view: 'tuned' the one parkloc fine-tuned (in --models), "
                     "'' PaddleOCR's own, or an ONNX file")
         ->capture_default_str();
+    cmd->add_option("--band-detector", band_detector,
+                    "Detector for the raw image's horizon band (distant floor numbers, pillar "
+                    "text): '' none (default), 'tuned' the one parkloc fine-tuned (in --models), "
+                    "or an ONNX file");
     cmd->add_option("--recognizer", recognizer,
                     "Recognizer: '' PaddleOCR's own (default), 'tuned' the one parkloc "
                     "fine-tuned (in --models), or an ONNX file");
@@ -77,6 +87,7 @@ inline std::unique_ptr<ocr::TextSpotter> makeSpotter(const SpotterArgs& args) {
   options.models = ocr::PpOcrModelPaths::inDirectory(args.models);
   options.models.floor_detection = floorDetectorPath(args.floor_detector, args.models);
   options.models.recognition = recognizerPath(args.recognizer, args.models);
+  options.models.band_detection = bandDetectorPath(args.band_detector, args.models);
   options.ground_view = args.floor_view;
   options.floor_db.unclip_ratio = args.floor_unclip_ratio;
   options.reading_alphabet = args.reading_alphabet;

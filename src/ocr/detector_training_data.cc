@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 
 #include "common/error.h"
 #include "io/polygon_points.h"
@@ -80,6 +81,29 @@ std::vector<ViewText> viewTexts(const GroundView& view, const io::ImageLabels& l
   return out;
 }
 
+// The labelled instances of one raw image inside its horizon band, in band pixels.
+std::vector<ViewText> bandTexts(const cv::Rect& band, const io::ImageLabels& labels,
+                                const DetectorDataOptions& options) {
+  const cv::Size size = band.size();
+  const cv::Point2f offset(0.f, static_cast<float>(band.y));
+  std::vector<ViewText> out;
+  for (const auto& inst : labels.instances) {
+    ViewText t;
+    const Quad raw = io::pointQuad(inst.polygon);
+    for (int k = 0; k < 4; ++k) t.corners[k] = raw[k] - offset;
+    if (!overlapsView(t.corners, size)) continue;
+    const bool all_inside = std::all_of(t.corners.begin(), t.corners.end(),
+                                        [&](const cv::Point2f& p) { return insideView(p, size); });
+    t.care = inst.legible && inst.occluded_fraction < options.max_occluded_fraction &&
+             !inst.truncated && all_inside;
+    t.cls = inst.cls;
+    t.text = inst.text;
+    std::replace(t.text.begin(), t.text.end(), ',', ' ');
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
 // The sequence's conditions joined by '+' ("blur+bright"); "none" when it names none.
 std::string conditionOf(const io::Sequence& sequence) {
   const auto names =
@@ -118,7 +142,11 @@ void checkViewOptions(const GroundViewOptions& v) {
 DetectorDataStats writeDetectorTrainingData(const std::vector<std::string>& sequence_dirs,
                                             const DetectorDataOptions& options) {
   if (options.out_dir.empty()) throw InputError("detector data: no output folder given");
-  checkViewOptions(options.view);
+  const bool band = options.source == DetectorSource::kRawBand;
+  if (band)
+    bandRect(options.band, {1, 1});  // throws for a band outside the image
+  else
+    checkViewOptions(options.view);
   const fs::path root(options.out_dir);
   createDirectory(root / "images");
   createDirectory(root / "labels");
@@ -131,10 +159,12 @@ DetectorDataStats writeDetectorTrainingData(const std::vector<std::string>& sequ
     const io::Sequence sequence(sequence_dirs[s]);
     const std::string name = sequenceName(sequence.dir());
     const std::string condition = conditionOf(sequence);
-    std::vector<std::pair<std::string, GroundView>> views;
+    std::vector<std::pair<std::string, std::optional<GroundView>>> views;
     for (const auto& camera : sequence.cameras())
       if (const auto* rig_camera = sequence.rig().find(camera))
-        views.emplace_back(camera, GroundView(*rig_camera, options.view));
+        views.emplace_back(camera, band ? std::nullopt
+                                        : std::optional<GroundView>(
+                                              GroundView(*rig_camera, options.view)));
     for (const size_t f : sampledFrames(sequence, options.frame_stride,
                                         options.max_frames_per_sequence)) {
       for (const auto& [camera, view] : views) {
@@ -146,8 +176,15 @@ DetectorDataStats writeDetectorTrainingData(const std::vector<std::string>& sequ
             fmt::format("{}_{}_{}", name, camera, io::timestampStem(sequence.timestamps()[f]));
         const std::string image_rel = "images/" + stem + ".png";
         const std::string labels_rel = "labels/" + stem + ".txt";
-        const auto texts = viewTexts(view, *labels, sequence.map(), options);
-        writeImage(root / image_rel, view.render(raw));
+        std::vector<ViewText> texts;
+        if (view) {
+          texts = viewTexts(*view, *labels, sequence.map(), options);
+          writeImage(root / image_rel, view->render(raw));
+        } else {
+          const cv::Rect rows = bandRect(options.band, raw.size());
+          texts = bandTexts(rows, *labels, options);
+          writeImage(root / image_rel, raw(rows));
+        }
         writeViewTexts(root / labels_rel, texts);
         index << image_rel << ' ' << labels_rel << ' ' << condition << '\n';
         ++stats.images;

@@ -1,6 +1,7 @@
 #pragma once
 // Training data for fine-tuning the DB text detector on ground views (ocr/ground_view.h), the
-// images the spotter feeds it when the camera is known. From dataset sequences (`parkloc
+// images the spotter feeds it when the camera is known, or on the raw image's horizon band
+// (ocr/raw_band.h). From dataset sequences (`parkloc
 // simulate` folders), for every n-th frame set and every camera, writes
 //   OUT/images/<sequence>_<camera>_<stem>.png   the ground view of the raw image (BGR)
 //   OUT/labels/<sequence>_<camera>_<stem>.txt   x1,y1,x2,y2,x3,y3,x4,y4,care,class,text
@@ -16,12 +17,21 @@
 #include <vector>
 
 #include "ocr/ground_view.h"
+#include "ocr/raw_band.h"
 
 namespace parkloc::ocr {
 
+// What the detector is to see: the floor view (floor text only), or the raw image's horizon
+// band (every class: distant floor numbers, pillar text, plates), in raw pixels less the band's
+// top. In the band, care is any text legible, less than half occluded, not truncated and
+// wholly in the band; the rest that touches the band is don't-care.
+enum class DetectorSource { kFloorView, kRawBand };
+
 struct DetectorDataOptions {
   std::string out_dir;
+  DetectorSource source = DetectorSource::kFloorView;
   GroundViewOptions view;
+  RawBand band;
   size_t frame_stride = 1;             // use every n-th frame set
   size_t max_frames_per_sequence = 0;  // 0: all
   double max_occluded_fraction = 0.5;  // care only below this

@@ -46,9 +46,8 @@ std::optional<LabelLine> parseLine(const std::string& line) {
   return out;
 }
 
-TEST(DetectorTrainingData, WritesGroundViewsWithTheirTextPolygons) {
-  const fs::path root =
-      fs::temp_directory_path() / ("parkloc_detector_data_" + std::to_string(::getpid()));
+// A two-frame-set sequence of the demo garage under `root`/dataset; returns its folder.
+std::string writeSmallSequence(const fs::path& root) {
   fs::remove_all(root);
   sim::Scenario scenario = sim::demoScenario();
   scenario.garages[0].slots_per_row = 9;
@@ -56,8 +55,13 @@ TEST(DetectorTrainingData, WritesGroundViewsWithTheirTextPolygons) {
   dataset.out_dir = (root / "dataset").string();
   dataset.max_frames = 2;
   sim::writeDataset(scenario, dataset);
-  const std::string sequence =
-      (root / "dataset" / "sequences" / sim::planSequences(scenario)[0].name).string();
+  return (root / "dataset" / "sequences" / sim::planSequences(scenario)[0].name).string();
+}
+
+TEST(DetectorTrainingData, WritesGroundViewsWithTheirTextPolygons) {
+  const fs::path root =
+      fs::temp_directory_path() / ("parkloc_detector_data_" + std::to_string(::getpid()));
+  const std::string sequence = writeSmallSequence(root);
 
   DetectorDataOptions options;
   options.out_dir = (root / "out").string();
@@ -111,6 +115,57 @@ TEST(DetectorTrainingData, WritesGroundViewsWithTheirTextPolygons) {
   EXPECT_EQ(dont_care, stats.dont_care_instances);
   EXPECT_GT(care_numbers, 0u);
   fs::remove_all(root);
+}
+
+TEST(DetectorTrainingData, WritesRawBandsWithTextOfEveryClass) {
+  const fs::path root =
+      fs::temp_directory_path() / ("parkloc_band_data_" + std::to_string(::getpid()));
+  const std::string sequence = writeSmallSequence(root);
+  DetectorDataOptions options;
+  options.out_dir = (root / "out").string();
+  options.source = DetectorSource::kRawBand;
+  const DetectorDataStats stats = writeDetectorTrainingData({sequence}, options);
+  EXPECT_EQ(stats.images, 8u);
+
+  std::ifstream index(root / "out" / "index.txt");
+  std::string image_rel, labels_rel, condition;
+  std::array<size_t, 3> care_by_class{};
+  size_t images = 0;
+  while (index >> image_rel >> labels_rel >> condition) {
+    ++images;
+    const cv::Mat band = cv::imread((root / "out" / image_rel).string(), cv::IMREAD_COLOR);
+    ASSERT_FALSE(band.empty()) << image_rel;
+    // The rows of a 1280 x 800 image that bandRect gives: [64, 512).
+    const cv::Rect rows = bandRect(options.band, {1280, 800});
+    EXPECT_EQ(band.size(), rows.size()) << image_rel;
+    std::ifstream labels(root / "out" / labels_rel);
+    std::string line;
+    while (std::getline(labels, line)) {
+      const auto parsed = parseLine(line);
+      ASSERT_TRUE(parsed) << labels_rel << ": " << line;
+      if (parsed->care != 1) continue;
+      ++care_by_class.at(static_cast<size_t>(parsed->cls));
+      for (const auto& c : parsed->corners) {  // wholly inside the band
+        EXPECT_GE(c.y, 0.f) << line;
+        EXPECT_LE(c.y, band.rows - 1.f) << line;
+      }
+    }
+  }
+  EXPECT_EQ(images, stats.images);
+  // Unlike the floor view, the band teaches pillar text as well as parking numbers.
+  EXPECT_GT(care_by_class[0], 0u);
+  EXPECT_GT(care_by_class[1], 0u);
+  fs::remove_all(root);
+}
+
+TEST(DetectorTrainingData, RejectsABandOutsideTheImage) {
+  DetectorDataOptions options;
+  options.out_dir = (fs::temp_directory_path() / "parkloc_band_data_unused").string();
+  options.source = DetectorSource::kRawBand;
+  options.band = {0.7, 0.6};
+  EXPECT_THROW(writeDetectorTrainingData({}, options), InputError);
+  options.band = {0.1, 1.2};
+  EXPECT_THROW(writeDetectorTrainingData({}, options), InputError);
 }
 
 TEST(DetectorTrainingData, RejectsBadViewOptions) {

@@ -196,6 +196,56 @@ TEST(PpOcrSpotterModels, TheTunedRecognizerReadsFloorTextThroughTheFisheye) {
   EXPECT_TRUE(spot.found[0].lexicon_match);
 }
 
+// A sign "LIFT B2" upright in the left camera's image, above the floor (where the floor view
+// cannot show it) and inside the horizon band: only the band detection finds it, and reports
+// it in raw pixels. PaddleOCR's detector serves as the band detector here (any DB model can);
+// the set-up's tuned one is measured by `parkloc eval ocr --band-detector tuned`.
+TEST(PpOcrSpotterModels, TheBandDetectorFindsTextAboveTheFloorInRawPixels) {
+  const auto rig = geometry::defaultRig();
+  const auto* left = rig.find("left");
+  cv::Mat image = testing::renderFloorText(*left, "A023", {2.0, 2.6}, M_PI, 1.0, 0.4).image;
+  const cv::Mat sign = testing::renderTextLine("LIFT B2", 20, 10);
+  const cv::Rect at(560, 64, sign.cols, sign.rows);
+  ASSERT_GE(at.y, bandRect(RawBand{}, image.size()).y);
+  // Far beyond the floor view, or above the horizon: nothing of it in the floor view.
+  const GroundView view(*left);
+  const auto bottom = view.viewFromRaw(cv::Point2f(at.x + at.width / 2.f, at.br().y));
+  ASSERT_FALSE(bottom && cv::Rect({0, 0}, view.size()).contains(*bottom));
+  sign.copyTo(image(at));
+  SpotRequest request;
+  request.camera = left;
+
+  auto found_at_sign = [&](const std::vector<TextInstance>& found) -> const TextInstance* {
+    for (const auto& inst : found) {
+      const cv::Point2f c = 0.25f * (inst.polygon[0] + inst.polygon[1] + inst.polygon[2] +
+                                     inst.polygon[3]);
+      if (at.contains(cv::Point(cvRound(c.x), cvRound(c.y)))) return &inst;
+    }
+    return nullptr;
+  };
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  {
+    PpOcrSpotter floor_only(options);
+    EXPECT_EQ(found_at_sign(floor_only.spot(image, request)), nullptr);
+  }
+  options.models.band_detection = options.models.detection;
+  PpOcrSpotter with_band(options);
+  const auto found = with_band.spot(image, request);
+  const TextInstance* sign_found = found_at_sign(found);
+  ASSERT_NE(sign_found, nullptr);
+  EXPECT_EQ(sign_found->text, "LIFT B2");
+  // In raw pixels: it overlaps the ink box (10 px inside the pasted line on every side) as a
+  // match of the metrics must, IoU >= 0.5; a box left in band pixels would be 64 px too high.
+  const std::vector<cv::Point2f> ink = {
+      cv::Point2f(at.x + 10.f, at.y + 10.f), {at.br().x - 10.f, at.y + 10.f},
+      {at.br().x - 10.f, at.br().y - 10.f}, {at.x + 10.f, at.br().y - 10.f}};
+  std::vector<cv::Point2f> box(sign_found->polygon.begin(), sign_found->polygon.end()), common;
+  const double inter = cv::intersectConvexConvex(ink, box, common, true);
+  const double iou = inter / (cv::contourArea(ink) + cv::contourArea(box) - inter);
+  EXPECT_GE(iou, 0.5);
+}
+
 // The set-up writes the recognizer from PaddleOCR's with parkloc's tuned head: its output
 // for the same crop must differ from the stock recognizer's.
 TEST(PpOcrSpotterModels, TheTunedRecognizerIsNotPaddleOcrsOwn) {

@@ -30,6 +30,7 @@ void requireBgrImage(const cv::Mat& image, const std::string& what) {
 struct PpOcrSpotter::Networks {
   DbDetector detector;
   std::optional<DbDetector> floor_detector;  // empty: `detector` serves the floor view too
+  std::optional<DbDetector> band_detector;   // empty: no band detection
   CtcRecognizer recognizer;
   std::optional<DirectionClassifier> direction;
   Charset charset;
@@ -66,11 +67,15 @@ struct ReadJob {
 PpOcrSpotter::PpOcrSpotter(const PpOcrOptions& options) : options_(options) {
   const auto& m = options.models;
   nets_ = std::unique_ptr<Networks>(
-      new Networks{DbDetector(m.detection, options.onnx), std::nullopt,
+      new Networks{DbDetector(m.detection, options.onnx), std::nullopt, std::nullopt,
                    CtcRecognizer(m.recognition, options.onnx), std::nullopt,
                    Charset::fromDictionaryFile(m.dictionary), TextClassifier()});
   freeReadingClasses(options.reading_alphabet, {}, nets_->charset);  // a foreign character throws
   if (!m.floor_detection.empty()) nets_->floor_detector.emplace(m.floor_detection, options.onnx);
+  if (!m.band_detection.empty()) {
+    bandRect(options.band, {1, 1});  // throws for a band outside the image
+    nets_->band_detector.emplace(m.band_detection, options.onnx);
+  }
   if (!m.direction.empty()) nets_->direction.emplace(m.direction, options.onnx);
   if (!m.classifier.empty()) nets_->classifier = TextClassifier::load(m.classifier);
 }
@@ -227,24 +232,32 @@ const GroundView& PpOcrSpotter::groundView(const geometry::RigCamera& camera) {
 std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                                                       const SpotRequest& request,
                                                       const geometry::RigCamera* camera,
-                                                      bool floor_view) {
-  const double scale =
-      std::min(1.0, options_.detection_max_side / double(std::max(image.cols, image.rows))) *
-      std::clamp(static_cast<double>(request.detection_scale), 0.1, 1.0);
+                                                      DetectorRole role) {
+  const double fit = role == DetectorRole::kRawBand
+                         ? 1.0
+                         : std::min(1.0, options_.detection_max_side /
+                                             double(std::max(image.cols, image.rows)));
+  const double scale = fit * std::clamp(static_cast<double>(request.detection_scale), 0.1, 1.0);
   const int w = roundTo32(image.cols * scale), h = roundTo32(image.rows * scale);
   cv::Mat resized;
   if (w == image.cols && h == image.rows)
     resized = image;
   else
     cv::resize(image, resized, {w, h}, 0, 0, cv::INTER_AREA);
-  const bool tuned = floor_view && nets_->floor_detector;
-  const DbDetector& detector = tuned ? *nets_->floor_detector : nets_->detector;
-  const cv::Mat probability = detector.probability({resized})[0];
+  const DbDetector* detector = &nets_->detector;
+  const DbOptions* db = &options_.db;
+  if (role == DetectorRole::kFloorView && nets_->floor_detector) {
+    detector = &*nets_->floor_detector;
+    db = &options_.floor_db;
+  } else if (role == DetectorRole::kRawBand && nets_->band_detector) {
+    detector = &*nets_->band_detector;
+    db = &options_.band_db;
+  }
+  const cv::Mat probability = detector->probability({resized})[0];
   const float sx = float(image.cols) / probability.cols, sy = float(image.rows) / probability.rows;
 
   std::vector<ReadJob> jobs;
-  for (const DbBox& box :
-       dbBoxesFromProbability(probability, tuned ? options_.floor_db : options_.db)) {
+  for (const DbBox& box : dbBoxesFromProbability(probability, *db)) {
     ReadJob job;
     for (int k = 0; k < 4; ++k)
       job.quad[k] = {(box.quad[k].x + 0.5f) * sx - 0.5f, (box.quad[k].y + 0.5f) * sy - 0.5f};
@@ -283,7 +296,8 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
   if (ground) {
     // Floor text, found and read in the bird's-eye view, its corners mapped back to raw.
     const GroundView& view = groundView(*request.camera);
-    for (TextInstance& inst : detectAndRead(view.render(image), request, nullptr, true)) {
+    for (TextInstance& inst :
+         detectAndRead(view.render(image), request, nullptr, DetectorRole::kFloorView)) {
       bool inside = true;
       for (auto& p : inst.polygon) {
         const auto raw = view.rawFromView(p);
@@ -298,16 +312,30 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
       out.push_back(std::move(inst));
     }
   }
-  if (!ground || options_.view == FisheyeView::kGroundAndRaw) {
-    const size_t from_ground = out.size();
-    for (TextInstance& inst : detectAndRead(image, request, request.camera, false)) {
+  // Raw-image detections already found (their centre inside a polygon found before) are
+  // dropped.
+  auto addUnseen = [&](std::vector<TextInstance> found) {
+    const size_t found_before = out.size();
+    for (TextInstance& inst : found) {
       const cv::Point2f c =
           (inst.polygon[0] + inst.polygon[1] + inst.polygon[2] + inst.polygon[3]) * 0.25f;
       bool seen = false;
-      for (size_t i = 0; i < from_ground && !seen; ++i) seen = contains(out[i].polygon, c);
+      for (size_t i = 0; i < found_before && !seen; ++i) seen = contains(out[i].polygon, c);
       if (!seen) out.push_back(std::move(inst));
     }
+  };
+  if (ground && nets_->band_detector) {
+    // The horizon band at full resolution; its crops are read from the band itself (a view
+    // of the image, not a copy), corners fitted in the crop (pillar text is not on the floor).
+    const cv::Rect rows = bandRect(options_.band, image.size());
+    std::vector<TextInstance> found =
+        detectAndRead(image(rows), request, nullptr, DetectorRole::kRawBand);
+    for (TextInstance& inst : found)
+      for (auto& p : inst.polygon) p.y += static_cast<float>(rows.y);
+    addUnseen(std::move(found));
   }
+  if (!ground || options_.view == FisheyeView::kGroundAndRaw)
+    addUnseen(detectAndRead(image, request, request.camera, DetectorRole::kScene));
   for (TextInstance& inst : out) {
     const auto [cls, score] = nets_->classifier.classify(image, inst.polygon, inst.text);
     inst.cls = cls;

@@ -12,6 +12,7 @@
 #include "ocr/lexicon.h"
 #include "ocr/onnx_model.h"
 #include "ocr/ppocr/pp_ocr_networks.h"
+#include "ocr/raw_band.h"
 #include "ocr/text_classifier.h"
 #include "ocr/text_spotter.h"
 #include "ocr/tracked_text_fit.h"
@@ -22,6 +23,11 @@ namespace parkloc::ocr {
 inline constexpr const char* kFloorDetectorFile = "parkloc_floor_det.onnx";
 inline std::string floorDetectorIn(const std::string& dir) {
   return dir + "/" + kFloorDetectorFile;
+}
+// The detector fine-tuned on the raw image's horizon band (ocr/raw_band.h).
+inline constexpr const char* kBandDetectorFile = "parkloc_band_det.onnx";
+inline std::string bandDetectorIn(const std::string& dir) {
+  return dir + "/" + kBandDetectorFile;
 }
 // The recognizer with its head fine-tuned on the simulator's text crops
 // (tools/recognizer_tuning, written at set-up); an experiment, not the default
@@ -38,6 +44,11 @@ struct PpOcrModelPaths {
   // (tools/detector_tuning, written at set-up), which the parkloc commands use by default
   // (--floor-detector): it finds more floor numbers (docs/OCR.md).
   std::string floor_detection;
+  // With a camera and a ground view: a detector run at full resolution on the raw image's
+  // horizon band (PpOcrOptions::band), for what the floor view cannot show: distant floor
+  // numbers and text on pillars and walls. Empty: no band detection. bandDetectorIn() names
+  // PP-OCRv4's with its neck and head fine-tuned by parkloc on such bands.
+  std::string band_detection;
   std::string recognition;
   std::string direction;  // empty: decide the direction by decoding both
   std::string dictionary;
@@ -74,6 +85,9 @@ struct PpOcrOptions {
   }();
   FisheyeView view = FisheyeView::kGround;
   GroundViewOptions ground_view;
+  // The band detector's rows and post-processing (trained as the floor detector was).
+  RawBand band;
+  DbOptions band_db = floor_db;
   // Full-frame detection input: the longer side is scaled to this (multiple of 32).
   int detection_max_side = 960;
   int recognition_max_width = CtcRecognizer::kMaxWidth;  // crops are kHeight px tall
@@ -122,8 +136,12 @@ class PpOcrSpotter : public TextSpotter {
   std::vector<TextInstance> spotRegions(const cv::Mat& image, const SpotRequest& request);
   std::vector<TextInstance> readRegions(const cv::Mat& image, const SpotRequest& request);
 
+  // Which detector looks at the image: PaddleOCR's on a raw image (scaled to
+  // detection_max_side), the floor detector on a floor view, the band detector on a raw
+  // image's horizon band (at full resolution).
+  enum class DetectorRole { kScene, kFloorView, kRawBand };
   std::vector<TextInstance> detectAndRead(const cv::Mat& image, const SpotRequest& request,
-                                          const geometry::RigCamera* camera, bool floor_view);
+                                          const geometry::RigCamera* camera, DetectorRole role);
   const GroundView& groundView(const geometry::RigCamera& camera);
 
   PpOcrOptions options_;

@@ -60,6 +60,9 @@ write_tuned() {  # base model, tuning, output
 # The floor-view detector: neck and head tuned on floor views (tools/detector_tuning/train.py).
 write_tuned third_party/models/ch_PP-OCRv4_det_infer.onnx models/floor_detector_tuning.npz \
   third_party/models/parkloc_floor_det.onnx
+# The horizon-band detector: neck and head tuned on raw bands (opt-in, --band-detector tuned).
+write_tuned third_party/models/ch_PP-OCRv4_det_infer.onnx models/band_detector_tuning.npz \
+  third_party/models/parkloc_band_det.onnx
 # The recognizer: its head tuned on rectified text crops (tools/recognizer_tuning/train.py).
 write_tuned third_party/models/ch_PP-OCRv4_rec_infer.onnx models/recognizer_tuning.npz \
   third_party/models/parkloc_rec.onnx

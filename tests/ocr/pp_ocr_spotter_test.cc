@@ -260,6 +260,20 @@ TEST(PpOcrSpotterModels, TheTunedRecognizerIsNotPaddleOcrsOwn) {
   EXPECT_GT(diff / a[0].steps, 1e-4);  // the same model gives exactly 0
 }
 
+// The set-up writes the band detector from PaddleOCR's with parkloc's tuned tensors: its
+// probability map of the same horizon band must differ from the stock detector's.
+TEST(PpOcrSpotterModels, TheBandDetectorIsNotPaddleOcrsOwn) {
+  const auto paths = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  const DbDetector stock(paths.detection, {}), band(bandDetectorIn(PARKLOC_MODEL_DIR), {});
+  cv::Mat image(800, 1280, CV_8UC3, cv::Scalar(110, 110, 110));
+  const cv::Mat sign = testing::renderTextLine("B1", 40, 12);
+  sign.copyTo(image(cv::Rect({600, 150}, sign.size())));
+  const cv::Mat rows = image(bandRect(RawBand{}, image.size()));
+  const cv::Mat a = stock.probability({rows})[0], b = band.probability({rows})[0];
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_GT(cv::norm(a, b, cv::NORM_L1) / a.total(), 1e-4);
+}
+
 // The set-up writes the floor detector from PaddleOCR's with parkloc's tuned tensors: its
 // probability map of the same floor view must differ from the stock detector's.
 TEST(PpOcrSpotterModels, TheFloorDetectorIsNotPaddleOcrsOwn) {

@@ -24,8 +24,8 @@ struct OcrArgs {
   std::string models = PARKLOC_MODEL_DIR;
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
   std::string floor_detector = "tuned";  // '', 'tuned' or a path (floorDetectorPath)
-  std::string recognizer;      // '', 'tuned' or a path (recognizerPath)
-  std::string band_detector;   // '', 'tuned' or a path (bandDetectorPath)
+  std::string recognizer;                // '', 'tuned' or a path (recognizerPath)
+  std::string band_detector;             // '', 'tuned' or a path (bandDetectorPath)
   int det_side = 960;
   std::string direction = "classifier";
   bool no_refine = false;

@@ -35,8 +35,8 @@ struct SpotterArgs {
   std::string models = PARKLOC_MODEL_DIR;
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
   std::string floor_detector = "tuned";  // '', 'tuned' or a path (floorDetectorPath)
-  std::string recognizer;      // '', 'tuned' or a path (recognizerPath)
-  std::string band_detector;   // '', 'tuned' or a path (bandDetectorPath)
+  std::string recognizer;                // '', 'tuned' or a path (recognizerPath)
+  std::string band_detector;             // '', 'tuned' or a path (bandDetectorPath)
   ocr::GroundViewOptions floor_view;
   double floor_unclip_ratio = ocr::PpOcrOptions{}.floor_db.unclip_ratio;
   std::string reading_alphabet = ocr::PpOcrOptions{}.reading_alphabet;
@@ -46,9 +46,10 @@ struct SpotterArgs {
         ->capture_default_str();
     cmd->add_option("--classifier", classifier, "Text classifier (YAML); '' for none")
         ->capture_default_str();
-    cmd->add_option("--floor-detector", floor_detector,
-                    "Detector for the floor view: 'tuned' the one parkloc fine-tuned (in --models), "
-                    "'' PaddleOCR's own, or an ONNX file")
+    cmd->add_option(
+           "--floor-detector", floor_detector,
+           "Detector for the floor view: 'tuned' the one parkloc fine-tuned (in --models), "
+           "'' PaddleOCR's own, or an ONNX file")
         ->capture_default_str();
     cmd->add_option("--band-detector", band_detector,
                     "Detector for the raw image's horizon band (distant floor numbers, pillar "

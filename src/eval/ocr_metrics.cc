@@ -65,7 +65,8 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
     const double angle = rotation_deg ? *rotation_deg : readingAngleDeg(polygon);
     if (const auto rot = rotationSubset(angle)) out.push_back(&result_.by_condition[*rot]);
     if (cls == map::TextClass::kParkingNumber)
-      out.push_back(&result_.parking_numbers_by_height[heightBin(geometry::apparentHeightPx(io::textPolygon(polygon)))]);
+      out.push_back(&result_.parking_numbers_by_height[heightBin(
+          geometry::apparentHeightPx(io::textPolygon(polygon)))]);
     return out;
   };
 

@@ -12,8 +12,8 @@ ClassifierSamples collectClassifierSamples(const std::vector<std::string>& seque
   std::vector<cv::Mat> rows;
   for (size_t s = 0; s < sequence_dirs.size(); ++s) {
     const io::Sequence sequence(sequence_dirs[s]);
-    for (const size_t f : sampledFrames(sequence, options.frame_stride,
-                                        options.max_frames_per_sequence)) {
+    for (const size_t f :
+         sampledFrames(sequence, options.frame_stride, options.max_frames_per_sequence)) {
       for (const auto& camera : sequence.cameras()) {
         const auto labels = sequence.loadLabels(f, camera);
         if (!labels || labels->instances.empty()) continue;

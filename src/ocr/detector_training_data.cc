@@ -106,8 +106,7 @@ std::vector<ViewText> bandTexts(const cv::Rect& band, const io::ImageLabels& lab
 
 // The sequence's conditions joined by '+' ("blur+bright"); "none" when it names none.
 std::string conditionOf(const io::Sequence& sequence) {
-  const auto names =
-      io::sequenceConditions(sequence.metaJson(), sequence.dir() + "/meta.json");
+  const auto names = io::sequenceConditions(sequence.metaJson(), sequence.dir() + "/meta.json");
   if (names.empty()) return "none";
   std::string joined;
   for (const auto& n : names) joined += (joined.empty() ? "" : "+") + n;
@@ -162,11 +161,11 @@ DetectorDataStats writeDetectorTrainingData(const std::vector<std::string>& sequ
     std::vector<std::pair<std::string, std::optional<GroundView>>> views;
     for (const auto& camera : sequence.cameras())
       if (const auto* rig_camera = sequence.rig().find(camera))
-        views.emplace_back(camera, band ? std::nullopt
-                                        : std::optional<GroundView>(
-                                              GroundView(*rig_camera, options.view)));
-    for (const size_t f : sampledFrames(sequence, options.frame_stride,
-                                        options.max_frames_per_sequence)) {
+        views.emplace_back(
+            camera,
+            band ? std::nullopt : std::optional<GroundView>(GroundView(*rig_camera, options.view)));
+    for (const size_t f :
+         sampledFrames(sequence, options.frame_stride, options.max_frames_per_sequence)) {
       for (const auto& [camera, view] : views) {
         const auto labels = sequence.loadLabels(f, camera);
         if (!labels) continue;  // nothing to learn from an unlabelled image

@@ -32,7 +32,9 @@ Quad jitteredQuad(const Quad& truth, const RecognizerDataOptions& o, std::mt1993
   const float w = std::max(quadWidth(truth), 1.f), h = std::max(quadHeight(truth), 1.f);
   const cv::Mat to_rect = rectifyingHomography(truth, static_cast<int>(std::lround(w)),
                                                static_cast<int>(std::lround(h)));
-  auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<>(lo, hi)(rng); };
+  auto uniform = [&](double lo, double hi) {
+    return std::uniform_real_distribution<>(lo, hi)(rng);
+  };
   const double gx = uniform(1.0, o.max_grow_x), gy = uniform(1.0, o.max_grow_y);
   const double cx = 0.5 * w + uniform(-o.max_shift, o.max_shift) * h;
   const double cy = 0.5 * h + uniform(-o.max_shift, o.max_shift) * h;
@@ -74,8 +76,8 @@ RecognizerDataStats writeRecognizerTrainingData(const std::vector<std::string>& 
   for (size_t s = 0; s < sequence_dirs.size(); ++s) {
     const io::Sequence sequence(sequence_dirs[s]);
     const std::string name = sequenceName(sequence.dir());
-    for (const size_t f : sampledFrames(sequence, options.frame_stride,
-                                        options.max_frames_per_sequence)) {
+    for (const size_t f :
+         sampledFrames(sequence, options.frame_stride, options.max_frames_per_sequence)) {
       for (const auto& camera : sequence.cameras()) {
         const auto labels = sequence.loadLabels(f, camera);
         if (!labels) continue;
@@ -104,7 +106,7 @@ RecognizerDataStats writeRecognizerTrainingData(const std::vector<std::string>& 
             // The first variant is the true box, the others as a detector might draw it.
             const Quad quad = v == 0 ? truth : jitteredQuad(truth, options, rng);
             const cv::Mat crop = rectifiedCrop(raw, quad, CtcRecognizer::kHeight,
-                                             CtcRecognizer::kMinWidth, CtcRecognizer::kMaxWidth);
+                                               CtcRecognizer::kMinWidth, CtcRecognizer::kMaxWidth);
             const std::string rel = fmt::format("crops/{}_{}.png", stem, n++);
             writeImage(root / rel, crop);
             index << rel << '\t' << inst.text << '\t' << static_cast<int>(inst.cls) << '\n';

@@ -87,9 +87,9 @@ TEST(OcrMetrics, HeightBinsSplitAtTheirEdges) {
 TEST(OcrMetrics, ParkingNumbersAreCountedByHeight) {
   io::ImageLabels truth;
   truth.instances = {
-      label(0, 0, 100, 10, "B2-117", TextClass::kParkingNumber),   // 10 px, found
-      label(200, 0, 300, 30, "B2-118", TextClass::kParkingNumber), // 30 px, missed
-      label(400, 0, 500, 30, "B2", TextClass::kPillar),            // not a number
+      label(0, 0, 100, 10, "B2-117", TextClass::kParkingNumber),    // 10 px, found
+      label(200, 0, 300, 30, "B2-118", TextClass::kParkingNumber),  // 30 px, missed
+      label(400, 0, 500, 30, "B2", TextClass::kPillar),             // not a number
   };
   const std::vector<ocr::TextInstance> detections = {
       detection(0, 0, 100, 10, "B2-117", "B2-117", TextClass::kParkingNumber),

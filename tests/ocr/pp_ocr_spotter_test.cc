@@ -217,8 +217,8 @@ TEST(PpOcrSpotterModels, TheBandDetectorFindsTextAboveTheFloorInRawPixels) {
 
   auto found_at_sign = [&](const std::vector<TextInstance>& found) -> const TextInstance* {
     for (const auto& inst : found) {
-      const cv::Point2f c = 0.25f * (inst.polygon[0] + inst.polygon[1] + inst.polygon[2] +
-                                     inst.polygon[3]);
+      const cv::Point2f c =
+          0.25f * (inst.polygon[0] + inst.polygon[1] + inst.polygon[2] + inst.polygon[3]);
       if (at.contains(cv::Point(cvRound(c.x), cvRound(c.y)))) return &inst;
     }
     return nullptr;
@@ -237,9 +237,10 @@ TEST(PpOcrSpotterModels, TheBandDetectorFindsTextAboveTheFloorInRawPixels) {
   EXPECT_EQ(sign_found->text, "LIFT B2");
   // In raw pixels: it overlaps the ink box (10 px inside the pasted line on every side) as a
   // match of the metrics must, IoU >= 0.5; a box left in band pixels would be 64 px too high.
-  const std::vector<cv::Point2f> ink = {
-      cv::Point2f(at.x + 10.f, at.y + 10.f), {at.br().x - 10.f, at.y + 10.f},
-      {at.br().x - 10.f, at.br().y - 10.f}, {at.x + 10.f, at.br().y - 10.f}};
+  const std::vector<cv::Point2f> ink = {cv::Point2f(at.x + 10.f, at.y + 10.f),
+                                        {at.br().x - 10.f, at.y + 10.f},
+                                        {at.br().x - 10.f, at.br().y - 10.f},
+                                        {at.x + 10.f, at.br().y - 10.f}};
   std::vector<cv::Point2f> box(sign_found->polygon.begin(), sign_found->polygon.end()), common;
   const double inter = cv::intersectConvexConvex(ink, box, common, true);
   const double iou = inter / (cv::contourArea(ink) + cv::contourArea(box) - inter);

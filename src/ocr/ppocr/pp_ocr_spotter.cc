@@ -113,8 +113,8 @@ std::vector<std::optional<TextInstance>> readJobs(
     const DirectionClassifier* direction, const Charset& charset) {
   std::vector<cv::Mat> upright(jobs.size());
   for (size_t i = 0; i < jobs.size(); ++i)
-    upright[i] = rectifiedCrop(image, jobs[i].quad, CtcRecognizer::kHeight, CtcRecognizer::kMinWidth,
-                               options.recognition_max_width);
+    upright[i] = rectifiedCrop(image, jobs[i].quad, CtcRecognizer::kHeight,
+                               CtcRecognizer::kMinWidth, options.recognition_max_width);
 
   // Which directions to decode, per job: bit 0 upright, bit 1 turned.
   std::vector<int> directions(jobs.size(), 1);
@@ -233,10 +233,10 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                                                       const SpotRequest& request,
                                                       const geometry::RigCamera* camera,
                                                       DetectorRole role) {
-  const double fit = role == DetectorRole::kRawBand
-                         ? 1.0
-                         : std::min(1.0, options_.detection_max_side /
-                                             double(std::max(image.cols, image.rows)));
+  const double fit =
+      role == DetectorRole::kRawBand
+          ? 1.0
+          : std::min(1.0, options_.detection_max_side / double(std::max(image.cols, image.rows)));
   const double scale = fit * std::clamp(static_cast<double>(request.detection_scale), 0.1, 1.0);
   const int w = roundTo32(image.cols * scale), h = roundTo32(image.rows * scale);
   cv::Mat resized;

@@ -26,9 +26,7 @@ inline std::string floorDetectorIn(const std::string& dir) {
 }
 // The detector fine-tuned on the raw image's horizon band (ocr/raw_band.h).
 inline constexpr const char* kBandDetectorFile = "parkloc_band_det.onnx";
-inline std::string bandDetectorIn(const std::string& dir) {
-  return dir + "/" + kBandDetectorFile;
-}
+inline std::string bandDetectorIn(const std::string& dir) { return dir + "/" + kBandDetectorFile; }
 // The recognizer with its head fine-tuned on the simulator's text crops
 // (tools/recognizer_tuning, written at set-up); an experiment, not the default
 // (--recognizer tuned; docs/OCR.md).

@@ -21,11 +21,7 @@ struct OcrArgs {
   std::string draw;
   std::string lexicon;
   std::string map;
-  std::string models = PARKLOC_MODEL_DIR;
-  std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
-  std::string floor_detector = "tuned";  // '', 'tuned' or a path (floorDetectorPath)
-  std::string recognizer;                // '', 'tuned' or a path (recognizerPath)
-  std::string band_detector;             // '', 'tuned' or a path (bandDetectorPath)
+  parkloc::app::SpotterArgs spotter;  // the models and the floor view, as for eval and run
   int det_side = 960;
   std::string direction = "classifier";
   bool no_refine = false;
@@ -36,12 +32,8 @@ struct OcrArgs {
 
 void run(const OcrArgs& args) {
   using namespace parkloc;
-  ocr::PpOcrOptions options;
-  options.models = ocr::PpOcrModelPaths::inDirectory(args.models);
-  options.models.classifier = args.classifier;
-  options.models.floor_detection = app::floorDetectorPath(args.floor_detector, args.models);
-  options.models.recognition = app::recognizerPath(args.recognizer, args.models);
-  options.models.band_detection = app::bandDetectorPath(args.band_detector, args.models);
+  ocr::PpOcrOptions options = app::spotterOptions(args.spotter);
+  options.models.classifier = args.spotter.classifier;  // a missing file is an error here
   options.detection_max_side = args.det_side;
   options.direction =
       args.direction == "both" ? ocr::DirectionMode::kDecodeBoth : ocr::DirectionMode::kClassifier;
@@ -94,20 +86,7 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--draw", args->draw, "Write the image with instances drawn (PNG)");
   cmd->add_option("--lexicon", args->lexicon, "Candidate texts, one a line");
   cmd->add_option("--map", args->map, "Candidate texts from an HD map (GeoJSON)");
-  cmd->add_option("--models", args->models, "Folder with the PP-OCRv4 ONNX models")
-      ->capture_default_str();
-  cmd->add_option("--classifier", args->classifier, "Text classifier (YAML); '' for none")
-      ->capture_default_str();
-  cmd->add_option("--floor-detector", args->floor_detector,
-                  "Detector for the floor view: 'tuned' the one parkloc fine-tuned (in --models), "
-                  "'' PaddleOCR's own, or an ONNX file")
-      ->capture_default_str();
-  cmd->add_option("--recognizer", args->recognizer,
-                  "Recognizer: '' PaddleOCR's own (default), 'tuned' the one parkloc "
-                  "fine-tuned (in --models), or an ONNX file");
-  cmd->add_option("--band-detector", args->band_detector,
-                  "With --camera: detector for the raw image's horizon band, '' none (default), "
-                  "'tuned' the one parkloc fine-tuned (in --models), or an ONNX file");
+  args->spotter.addTo(cmd);
   cmd->add_option("--det-side", args->det_side, "Detection input: longer side in pixels")
       ->capture_default_str();
   cmd->add_option("--direction", args->direction, "classifier | both")

@@ -83,7 +83,8 @@ struct SpotterArgs {
   }
 };
 
-inline std::unique_ptr<ocr::TextSpotter> makeSpotter(const SpotterArgs& args) {
+// The engine's options from the shared flags (the classifier only when its file exists).
+inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   ocr::PpOcrOptions options;
   options.models = ocr::PpOcrModelPaths::inDirectory(args.models);
   options.models.floor_detection = floorDetectorPath(args.floor_detector, args.models);
@@ -95,7 +96,11 @@ inline std::unique_ptr<ocr::TextSpotter> makeSpotter(const SpotterArgs& args) {
   if (!args.classifier.empty() && std::filesystem::exists(args.classifier)) {
     options.models.classifier = args.classifier;
   }
-  return std::make_unique<ocr::PpOcrSpotter>(options);
+  return options;
+}
+
+inline std::unique_ptr<ocr::TextSpotter> makeSpotter(const SpotterArgs& args) {
+  return std::make_unique<ocr::PpOcrSpotter>(spotterOptions(args));
 }
 
 // "\r<stage> [#####.....] 12/40 frame sets, 3 s, eta 7 s" on stderr, a new line per stage.

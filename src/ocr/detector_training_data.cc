@@ -42,6 +42,25 @@ bool overlapsView(const std::array<cv::Point2f, 4>& corners, const cv::Size& siz
   return cv::intersectConvexConvex(hull, view, common, true) > 0.f;
 }
 
+bool whollyInside(const std::array<cv::Point2f, 4>& corners, const cv::Size& size) {
+  return std::all_of(corners.begin(), corners.end(),
+                     [&](const cv::Point2f& p) { return insideView(p, size); });
+}
+
+// Care for the loss: text a reader could read, wholly in the image the detector sees.
+bool careFor(const io::LabelInstance& inst, bool wholly_inside,
+             const DetectorDataOptions& options) {
+  return inst.legible && inst.occluded_fraction < options.max_occluded_fraction &&
+         !inst.truncated && wholly_inside;
+}
+
+// The label's class and text; commas become spaces (the label line is comma separated).
+void copyClassAndText(const io::LabelInstance& inst, ViewText& t) {
+  t.cls = inst.cls;
+  t.text = inst.text;
+  std::replace(t.text.begin(), t.text.end(), ',', ' ');
+}
+
 // The labelled instances of one raw image in view pixels. The label polygons are the exact
 // projections of the text corners, so casting them onto the floor places floor text exactly;
 // text on pillars and plates lands farther out (and nowhere above the horizon), so it is kept
@@ -59,23 +78,18 @@ std::vector<ViewText> viewTexts(const GroundView& view, const io::ImageLabels& l
       mapped = v.has_value();
     }
     if (!mapped) continue;
-    const bool all_inside =
-        std::all_of(t.corners.begin(), t.corners.end(),
-                    [&](const cv::Point2f& p) { return insideView(p, view.size()); });
+    const bool all_inside = whollyInside(t.corners, view.size());
     // Licence plates are not in the map; like pillar text they stand upright.
     const map::Landmark* landmark = map.findById(inst.landmark_id);
     const bool floor = landmark && landmark->surface == map::Surface::kGround;
     if (floor) {
       if (!overlapsView(t.corners, view.size())) continue;
       // A truncated instance runs off the raw image, i.e. into the black part of the view.
-      t.care = inst.legible && inst.occluded_fraction < options.max_occluded_fraction &&
-               !inst.truncated && all_inside;
+      t.care = careFor(inst, all_inside, options);
     } else if (!all_inside) {
       continue;
     }
-    t.cls = inst.cls;
-    t.text = inst.text;
-    std::replace(t.text.begin(), t.text.end(), ',', ' ');  // the line is comma separated
+    copyClassAndText(inst, t);
     out.push_back(std::move(t));
   }
   return out;
@@ -92,13 +106,8 @@ std::vector<ViewText> bandTexts(const cv::Rect& band, const io::ImageLabels& lab
     const Quad raw = io::pointQuad(inst.polygon);
     for (int k = 0; k < 4; ++k) t.corners[k] = raw[k] - offset;
     if (!overlapsView(t.corners, size)) continue;
-    const bool all_inside = std::all_of(t.corners.begin(), t.corners.end(),
-                                        [&](const cv::Point2f& p) { return insideView(p, size); });
-    t.care = inst.legible && inst.occluded_fraction < options.max_occluded_fraction &&
-             !inst.truncated && all_inside;
-    t.cls = inst.cls;
-    t.text = inst.text;
-    std::replace(t.text.begin(), t.text.end(), ',', ' ');
+    t.care = careFor(inst, whollyInside(t.corners, size), options);
+    copyClassAndText(inst, t);
     out.push_back(std::move(t));
   }
   return out;
@@ -143,7 +152,7 @@ DetectorDataStats writeDetectorTrainingData(const std::vector<std::string>& sequ
   if (options.out_dir.empty()) throw InputError("detector data: no output folder given");
   const bool band = options.source == DetectorSource::kRawBand;
   if (band)
-    bandRect(options.band, {1, 1});  // throws for a band outside the image
+    checkBand(options.band);
   else
     checkViewOptions(options.view);
   const fs::path root(options.out_dir);

@@ -1,9 +1,9 @@
 #pragma once
 // Training data for fine-tuning the DB text detector on ground views (ocr/ground_view.h), the
 // images the spotter feeds it when the camera is known, or on the raw image's horizon band
-// (ocr/raw_band.h). From dataset sequences (`parkloc
-// simulate` folders), for every n-th frame set and every camera, writes
-//   OUT/images/<sequence>_<camera>_<stem>.png   the ground view of the raw image (BGR)
+// (ocr/raw_band.h). From dataset sequences (`parkloc simulate` folders), for every n-th frame
+// set and every camera, writes
+//   OUT/images/<sequence>_<camera>_<stem>.png   the raw image's ground view or band (BGR)
 //   OUT/labels/<sequence>_<camera>_<stem>.txt   x1,y1,x2,y2,x3,y3,x4,y4,care,class,text
 //   OUT/index.txt                               <image> <labels> <conditions>, paths from OUT
 // (conditions: io::sequenceConditions joined by "+", "none" when there are none)

@@ -9,10 +9,14 @@
 
 namespace parkloc::ocr {
 
-cv::Rect bandRect(const RawBand& band, const cv::Size& size) {
+void checkBand(const RawBand& band) {
   if (!(band.top >= 0.0 && band.bottom <= 1.0 && band.bottom > band.top))
     throw InputError(fmt::format("raw band [{}, {}): must lie in [0, 1], bottom below top",
                                  band.top, band.bottom));
+}
+
+cv::Rect bandRect(const RawBand& band, const cv::Size& size) {
+  checkBand(band);
   auto row = [&](double fraction) {
     return static_cast<int>(std::lround(fraction * size.height / 32.0)) * 32;
   };

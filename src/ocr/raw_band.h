@@ -15,9 +15,11 @@ struct RawBand {
   double bottom = 0.64;
 };
 
+// Throws InputError for a band outside [0, 1] or with bottom <= top.
+void checkBand(const RawBand& band);
+
 // The band's rectangle in an image of `size`, its top and height rounded to multiples of 32
-// (the detector's stride) and clipped to the image. Throws InputError for a band outside
-// [0, 1] or with bottom <= top.
+// (the detector's stride) and clipped to the image; checkBand's error for a bad band.
 cv::Rect bandRect(const RawBand& band, const cv::Size& size);
 
 }  // namespace parkloc::ocr

@@ -22,6 +22,8 @@ TEST(RawBand, ABandOutsideTheImageIsAnInputError) {
   EXPECT_THROW(bandRect({-0.1, 0.5}, {1280, 800}), InputError);
   EXPECT_THROW(bandRect({0.2, 1.5}, {1280, 800}), InputError);
   EXPECT_THROW(bandRect({0.6, 0.6}, {1280, 800}), InputError);
+  EXPECT_THROW(checkBand({0.7, 0.6}), InputError);
+  EXPECT_NO_THROW(checkBand(RawBand{}));
 }
 
 }  // namespace

@@ -73,7 +73,7 @@ PpOcrSpotter::PpOcrSpotter(const PpOcrOptions& options) : options_(options) {
   freeReadingClasses(options.reading_alphabet, {}, nets_->charset);  // a foreign character throws
   if (!m.floor_detection.empty()) nets_->floor_detector.emplace(m.floor_detection, options.onnx);
   if (!m.band_detection.empty()) {
-    bandRect(options.band, {1, 1});  // throws for a band outside the image
+    checkBand(options.band);
     nets_->band_detector.emplace(m.band_detection, options.onnx);
   }
   if (!m.direction.empty()) nets_->direction.emplace(m.direction, options.onnx);

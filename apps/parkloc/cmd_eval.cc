@@ -43,9 +43,8 @@ void runEvalOcr(const EvalArgs& a) {
   progress.finish();
   std::cout << fmt::format("{} images from {} sequences ({} split of {}), engine {}\n\n",
                            result.images, sequences.size(), a.split, a.dataset, spotter->name());
-  std::cout << eval::tableMarkdown(eval::table3(result, std::nullopt));
-  std::cout << eval::tableMarkdown(eval::table3Conditions(result));
-  std::cout << eval::tableMarkdown(eval::table3Heights(result));
+  for (const eval::Table& t : eval::table3All(result, std::nullopt))
+    std::cout << eval::tableMarkdown(t);
   const eval::OcrCounts numbers = result.by_class.count("parking_number")
                                       ? result.by_class.at("parking_number")
                                       : eval::OcrCounts{};

@@ -486,9 +486,8 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
   const std::string paper_key = "paper_afm1_mcrp1_mcap1";
   if (!shared_ocr && own_ocr_evaluator.result().images > 0) {
     report.ocr = own_ocr_evaluator.result();
-    report.tables.push_back(table3(own_ocr_evaluator.result(), std::nullopt));
-    report.tables.push_back(table3Conditions(own_ocr_evaluator.result()));
-    report.tables.push_back(table3Heights(own_ocr_evaluator.result()));
+    for (Table& t : table3All(own_ocr_evaluator.result(), std::nullopt))
+      report.tables.push_back(std::move(t));
     report.notes.push_back(fmt::format(
         "OCR figures from the {} camera images the parkloc pipeline spotted on the full frame "
         "(map-guided frames left out).",
@@ -496,9 +495,8 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
   }
   if (shared_ocr) {
     report.ocr = ocr_evaluator.result();
-    report.tables.push_back(table3(ocr_evaluator.result(), afm_counts));
-    report.tables.push_back(table3Conditions(ocr_evaluator.result()));
-    report.tables.push_back(table3Heights(ocr_evaluator.result()));
+    for (Table& t : table3All(ocr_evaluator.result(), afm_counts))
+      report.tables.push_back(std::move(t));
   }
   {
     std::vector<AblationRow> rows;

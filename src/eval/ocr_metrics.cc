@@ -44,32 +44,15 @@ double readingAngleDeg(const Quad& polygon) {
   return std::atan2(right.y - left.y, right.x - left.x) * 180.0 / M_PI;
 }
 
-void OcrEvaluator::add(const io::ImageLabels& truth,
-                       const std::vector<ocr::TextInstance>& detections,
-                       const std::vector<std::string>& image_conditions, double spotting_seconds) {
-  std::vector<Quad> truth_quads, detection_quads;
-  std::vector<bool> dont_care;
-  for (const io::LabelInstance& instance : truth.instances) {
-    truth_quads.push_back(io::pointQuad(instance.polygon));
-    dont_care.push_back(instance.occluded_fraction >= options_.dont_care_occlusion ||
-                        !instance.legible);
-  }
-  for (const ocr::TextInstance& d : detections) detection_quads.push_back(d.polygon);
-  const ImageMatching matching =
-      matchDetections(truth_quads, dont_care, detection_quads, options_.matching);
+namespace {
 
-  // Every count goes to the overall tally, its class and each subset it belongs to.
-  auto buckets = [&](map::TextClass cls, const Quad& polygon, const double* rotation_deg) {
-    std::vector<OcrCounts*> out = {&result_.overall, &result_.by_class[map::toString(cls)]};
-    for (const std::string& c : image_conditions) out.push_back(&result_.by_condition[c]);
-    const double angle = rotation_deg ? *rotation_deg : readingAngleDeg(polygon);
-    if (const auto rot = rotationSubset(angle)) out.push_back(&result_.by_condition[*rot]);
-    if (cls == map::TextClass::kParkingNumber)
-      out.push_back(&result_.parking_numbers_by_height[heightBin(
-          geometry::apparentHeightPx(io::textPolygon(polygon)))]);
-    return out;
-  };
-
+// The counts of one image's matching: each cared-for truth, match, miss and false detection
+// goes to every tally `buckets(class, polygon, rotation or nullptr)` names.
+template <typename Buckets>
+void countMatching(const io::ImageLabels& truth, const std::vector<ocr::TextInstance>& detections,
+                   const std::vector<Quad>& truth_quads, const std::vector<Quad>& detection_quads,
+                   const std::vector<bool>& dont_care, const ImageMatching& matching,
+                   const Buckets& buckets) {
   for (size_t t = 0; t < truth.instances.size(); ++t) {
     if (dont_care[t]) continue;
     const io::LabelInstance& gt = truth.instances[t];
@@ -99,6 +82,46 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
       ++c->fp;
     }
   }
+}
+
+}  // namespace
+
+void OcrEvaluator::add(const io::ImageLabels& truth,
+                       const std::vector<ocr::TextInstance>& detections,
+                       const std::vector<std::string>& image_conditions, double spotting_seconds) {
+  std::vector<Quad> truth_quads, detection_quads;
+  std::vector<bool> dont_care, dont_care_by_height;
+  for (const io::LabelInstance& instance : truth.instances) {
+    truth_quads.push_back(io::pointQuad(instance.polygon));
+    const bool occluded = instance.occluded_fraction >= options_.dont_care_occlusion;
+    dont_care.push_back(occluded || !instance.legible);
+    dont_care_by_height.push_back(occluded ||
+                                  geometry::apparentHeightPx(instance.polygon) < kHeightRuleMinPx);
+  }
+  for (const ocr::TextInstance& d : detections) detection_quads.push_back(d.polygon);
+
+  // Every count goes to the overall tally, its class and each subset it belongs to.
+  auto buckets = [&](map::TextClass cls, const Quad& polygon, const double* rotation_deg) {
+    std::vector<OcrCounts*> out = {&result_.overall, &result_.by_class[map::toString(cls)]};
+    for (const std::string& c : image_conditions) out.push_back(&result_.by_condition[c]);
+    const double angle = rotation_deg ? *rotation_deg : readingAngleDeg(polygon);
+    if (const auto rot = rotationSubset(angle)) out.push_back(&result_.by_condition[*rot]);
+    if (cls == map::TextClass::kParkingNumber)
+      out.push_back(&result_.parking_numbers_by_height[heightBin(
+          geometry::apparentHeightPx(io::textPolygon(polygon)))]);
+    return out;
+  };
+  countMatching(truth, detections, truth_quads, detection_quads, dont_care,
+                matchDetections(truth_quads, dont_care, detection_quads, options_.matching),
+                buckets);
+
+  auto by_class = [&](map::TextClass cls, const Quad&, const double*) {
+    return std::vector<OcrCounts*>{&result_.height_rule_by_class[map::toString(cls)]};
+  };
+  countMatching(
+      truth, detections, truth_quads, detection_quads, dont_care_by_height,
+      matchDetections(truth_quads, dont_care_by_height, detection_quads, options_.matching),
+      by_class);
   ++result_.images;
   result_.spotting_seconds += spotting_seconds;
 }

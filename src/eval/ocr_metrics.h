@@ -47,14 +47,21 @@ struct OcrEvaluation {
   std::map<std::string, OcrCounts> by_class;      // "parking_number", "pillar", "other"
   std::map<std::string, OcrCounts> by_condition;  // names of conditionNames()
   // Parking numbers by apparent height in the image (heightBin): what the size of a
-  // number costs, since the simulator labels text as legible from 8 px up.
+  // number costs.
   std::map<std::string, OcrCounts> parking_numbers_by_height;
+  // Per class, with every text at least kHeightRuleMinPx tall cared for (unless half
+  // occluded), whatever its label's legibility: the simulator's rule until session 6, kept
+  // so that figures compare across the change to the blur- and pitch-aware rule.
+  std::map<std::string, OcrCounts> height_rule_by_class;
   size_t images = 0;
   double spotting_seconds = 0.0;  // time spent in the engine, for images per second
   double imagesPerSecond() const {
     return spotting_seconds > 0.0 ? static_cast<double>(images) / spotting_seconds : 0.0;
   }
 };
+
+// The apparent height from which the height-only rule cares for a text.
+inline constexpr double kHeightRuleMinPx = 8.0;
 
 struct OcrEvaluationOptions {
   MatchingOptions matching;

@@ -36,6 +36,11 @@ Table table3(const OcrEvaluation& ocr, const std::optional<AnomalyFilterCounts>&
 Table table3Conditions(const OcrEvaluation& ocr);
 // Parking numbers per apparent height bin (OcrEvaluation::parking_numbers_by_height).
 Table table3Heights(const OcrEvaluation& ocr);
+// Per class under the height-only legibility rule (OcrEvaluation::height_rule_by_class).
+Table table3HeightRule(const OcrEvaluation& ocr);
+// The four above, in that order.
+std::vector<Table> table3All(const OcrEvaluation& ocr,
+                             const std::optional<AnomalyFilterCounts>& afm);
 
 struct AblationRow {
   bool afm = false, mcrp = false, mcap = false;

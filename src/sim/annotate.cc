@@ -61,7 +61,7 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
     if (!projectable) continue;
     const double height = geometry::apparentHeightPx(poly);
     if (height <= 0.0 || height < options.min_labelled_height_px) continue;
-    const bool legible = height >= options.min_height_px;
+    const bool legible = isLegible(poly, characterCount(lm.text), options.blur, options.legibility);
     // Sample points on the text: inside the image, and seen or hidden.
     int inside = 0, hidden = 0, total = 0;
     const Eigen::Vector3d r = lm.readingDirection() * lm.width;

@@ -8,14 +8,17 @@
 #include "geometry/rig.h"
 #include "io/labels.h"
 #include "sim/garage.h"
+#include "sim/legibility.h"
 
 namespace parkloc::sim {
 
 struct AnnotateOptions {
-  // Apparent height (area over reading length) below which text is too thin to read: it is
-  // labelled "not legible" (don't care) down to min_labelled_height_px and left out below,
+  // Text a reader could not read in this camera's image (sim/legibility.h: too thin, glyphs
+  // squeezed along the reading direction, or smeared by `blur`) is labelled "not legible"
+  // (don't care), down to an apparent height of min_labelled_height_px, and left out below,
   // so that a detector that still finds it is neither rewarded nor counted wrong.
-  double min_height_px = 8.0;
+  LegibilityOptions legibility;
+  ImageBlur blur;  // the camera's, imageBlur(); none by default
   double min_labelled_height_px = 3.0;
   double max_distance = 30.0;        // metres from the camera
   double min_inside_fraction = 0.3;  // of the text's sample points inside the image

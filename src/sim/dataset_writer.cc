@@ -211,7 +211,9 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
         labels.timestamp = t;
         labels.width = cam.model.width;
         labels.height = cam.model.height;
-        labels.instances = annotateImage(*garage, level, cam, state.pose);
+        AnnotateOptions annotate;
+        annotate.blur = imageBlur(light, cam);
+        labels.instances = annotateImage(*garage, level, cam, state.pose, annotate);
         io::saveLabels(labels, (dir / "labels" / cam.name / (stem + ".json")).string());
         io::saveIcdarLabels(labels, (dir / "labels" / cam.name / (stem + ".txt")).string());
         ++local.images;

@@ -12,6 +12,8 @@
 #include <emmintrin.h>
 #endif
 
+#include "sim/legibility.h"
+
 namespace parkloc::sim {
 namespace {
 
@@ -821,14 +823,12 @@ struct Renderer::Impl {
         },
         stripes);
 
-    if (light.defocus_sigma > 0.0f) cv::GaussianBlur(img, img, cv::Size(0, 0), light.defocus_sigma);
-    if (light.motion_blur_px > 1.0f) {
-      // Side cameras see the scene sweep past horizontally; front and rear mostly expand.
-      const bool side = std::abs(cam.vehicle_from_camera.linear().col(2).y()) > 0.5;
-      const int len = std::max(
-          1, static_cast<int>(std::lround(side ? light.motion_blur_px : light.motion_blur_px / 3)));
-      if (len > 1) cv::blur(img, img, cv::Size(len, 1));
-    }
+    // The same blur the labels' legibility rule assumes (sim/legibility.h).
+    const ImageBlur blur = imageBlur(light, cam);
+    if (blur.defocus_sigma_px > 0.0)
+      cv::GaussianBlur(img, img, cv::Size(0, 0), blur.defocus_sigma_px);
+    if (blur.motion_length_px > 1.0)
+      cv::blur(img, img, cv::Size(static_cast<int>(blur.motion_length_px), 1));
     return img;
   }
 

@@ -105,6 +105,34 @@ TEST(OcrMetrics, ParkingNumbersAreCountedByHeight) {
   EXPECT_EQ(bins.at("24 px and more").tp, 0u);
 }
 
+TEST(OcrMetrics, TheHeightOnlyRuleCaresForTextLabelledIllegibleButTallEnough) {
+  io::ImageLabels truth;
+  truth.instances = {
+      label(0, 0, 100, 30, "B2-117", TextClass::kParkingNumber),    // legible, found
+      label(200, 0, 220, 30, "B2-118", TextClass::kParkingNumber),  // squeezed, missed
+      label(400, 0, 500, 6, "B2-119", TextClass::kParkingNumber),   // 6 px, missed
+      label(600, 0, 700, 30, "B2-120", TextClass::kParkingNumber),  // squeezed, found
+  };
+  truth.instances[1].legible = false;
+  truth.instances[2].legible = false;
+  truth.instances[3].legible = false;
+  const std::vector<ocr::TextInstance> detections = {
+      detection(0, 0, 100, 30, "B2-117", "B2-117", TextClass::kParkingNumber),
+      detection(600, 0, 700, 30, "B2-120", "B2-120", TextClass::kParkingNumber),
+  };
+  OcrEvaluator evaluator;
+  evaluator.add(truth, detections, {});
+  const OcrCounts& labelled = evaluator.result().by_class.at("parking_number");
+  EXPECT_EQ(labelled.truths, 1u);  // the found illegible one is ignored, not a false positive
+  EXPECT_EQ(labelled.tp, 1u);
+  EXPECT_EQ(labelled.fp, 0u);
+  const OcrCounts& by_height = evaluator.result().height_rule_by_class.at("parking_number");
+  EXPECT_EQ(by_height.truths, 3u);  // all but the one under 8 px
+  EXPECT_EQ(by_height.tp, 2u);
+  EXPECT_EQ(by_height.fn, 1u);
+  EXPECT_EQ(by_height.fp, 0u);
+}
+
 TEST(OcrMetrics, ReadingAngleFollowsTheLabelConvention) {
   Quad upright = {cv::Point2f(0, 0), cv::Point2f(10, 0), cv::Point2f(10, 4), cv::Point2f(0, 4)};
   EXPECT_NEAR(readingAngleDeg(upright), 0.0, 1e-9);

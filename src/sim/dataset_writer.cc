@@ -78,6 +78,34 @@ std::vector<SequencePlan> planSequences(const Scenario& scenario) {
   return plans;
 }
 
+namespace {
+
+// splits.json: the sequences just written, by split. When only some splits were written, the
+// others keep what an earlier run listed in the same folder (those whose folder is still
+// there), so that `--split val` after `--split test` leaves a dataset with both.
+nlohmann::json splitsJson(const fs::path& root, const std::vector<SequencePlan>& plans,
+                          const std::vector<std::string>& written_splits) {
+  nlohmann::json splits = {{"train", nlohmann::json::array()},
+                           {"val", nlohmann::json::array()},
+                           {"test", nlohmann::json::array()}};
+  for (const auto& p : plans) splits[p.split].push_back(p.name);
+  if (written_splits.empty()) return splits;
+  std::ifstream in(root / "splits.json");
+  const nlohmann::json earlier = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!earlier.is_object()) return splits;  // none, or unreadable: rewritten whole
+  for (auto& [split, names] : splits.items()) {
+    const bool written =
+        std::find(written_splits.begin(), written_splits.end(), split) != written_splits.end();
+    if (written || !earlier.contains(split) || !earlier[split].is_array()) continue;
+    for (const auto& name : earlier[split])
+      if (name.is_string() && fs::is_directory(root / "sequences" / name.get<std::string>()))
+        names.push_back(name);
+  }
+  return splits;
+}
+
+}  // namespace
+
 DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& options,
                           const ProgressCallback& progress) {
   const auto wall_start = std::chrono::steady_clock::now();
@@ -317,10 +345,7 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
   for (auto& t : threads) t.join();
   if (failure) std::rethrow_exception(failure);
 
-  nlohmann::json splits = {{"train", nlohmann::json::array()},
-                           {"val", nlohmann::json::array()},
-                           {"test", nlohmann::json::array()}};
-  for (const auto& p : plans) splits[p.split].push_back(p.name);
+  const nlohmann::json splits = splitsJson(root, plans, options.splits);  // reads the old file
   std::ofstream(root / "splits.json") << splits.dump(2) << "\n";
   stats.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

@@ -91,6 +91,42 @@ TEST(DatasetWriter, OneSplitHasTheSameGaragesAsTheWholeDataset) {
   fs::remove_all(base);
 }
 
+TEST(DatasetWriter, WritingOneSplitKeepsTheOthersListed) {
+  namespace fs = std::filesystem;
+  const fs::path out =
+      fs::temp_directory_path() / ("parkloc_sim_splits_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  Scenario s = demoScenario();
+  s.garages[0].slots_per_row = 9;
+  s.garages.push_back(s.garages[0]);
+  s.garages[0].split = "train";
+  s.garages[0].name = "ga";
+  s.garages[1].split = "test";
+  s.garages[1].name = "gb";
+  const auto plans = planSequences(s);
+  auto splitsOf = [&] {
+    std::ifstream in(out / "splits.json");
+    return nlohmann::json::parse(in);
+  };
+  DatasetOptions options;
+  options.max_frames = 1;
+  options.out_dir = out.string();
+  options.splits = {"test"};
+  writeDataset(s, options);
+  EXPECT_EQ(splitsOf().at("train").size(), 0u);
+  options.splits = {"train"};
+  writeDataset(s, options);
+  EXPECT_EQ(splitsOf().at("train"), nlohmann::json::array({plans[0].name}));
+  EXPECT_EQ(splitsOf().at("test"), nlohmann::json::array({plans[1].name}));  // kept
+  // A listed sequence whose folder is gone is not kept.
+  fs::remove_all(out / "sequences" / plans[0].name);
+  options.splits = {"test"};
+  writeDataset(s, options);
+  EXPECT_EQ(splitsOf().at("train").size(), 0u);
+  EXPECT_EQ(splitsOf().at("test"), nlohmann::json::array({plans[1].name}));
+  fs::remove_all(out);
+}
+
 TEST(DatasetWriter, RejectsBadOptions) {
   DatasetOptions options;
   EXPECT_THROW(writeDataset(demoScenario(), options), InputError);

@@ -39,6 +39,8 @@ struct SpotterArgs {
   std::string band_detector;             // '', 'tuned' or a path (bandDetectorPath)
   ocr::GroundViewOptions floor_view;
   double floor_unclip_ratio = ocr::PpOcrOptions{}.floor_db.unclip_ratio;
+  float floor_box_threshold = ocr::PpOcrOptions{}.floor_db.box_threshold;
+  float floor_binary_threshold = ocr::PpOcrOptions{}.floor_db.binary_threshold;
   std::string reading_alphabet = ocr::PpOcrOptions{}.reading_alphabet;
 
   void addTo(CLI::App* cmd) {
@@ -73,6 +75,15 @@ struct SpotterArgs {
                     "Box growth of the fine-tuned floor detector (DB unclip ratio)")
         ->check(CLI::Range(1.0, 4.0))
         ->capture_default_str();
+    cmd->add_option("--floor-box-threshold", floor_box_threshold,
+                    "Floor detector: keep a box whose mean probability reaches this (DB box "
+                    "threshold)")
+        ->check(CLI::Range(0.05, 0.95))
+        ->capture_default_str();
+    cmd->add_option("--floor-binary-threshold", floor_binary_threshold,
+                    "Floor detector: a map pixel is text above this probability (DB threshold)")
+        ->check(CLI::Range(0.05, 0.95))
+        ->capture_default_str();
     cmd->add_option("--reading-alphabet", reading_alphabet,
                     "Characters of a free reading besides the lexicon's ('' for all 6625)")
         ->capture_default_str();
@@ -92,6 +103,8 @@ inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   options.models.band_detection = bandDetectorPath(args.band_detector, args.models);
   options.ground_view = args.floor_view;
   options.floor_db.unclip_ratio = args.floor_unclip_ratio;
+  options.floor_db.box_threshold = args.floor_box_threshold;
+  options.floor_db.binary_threshold = args.floor_binary_threshold;
   options.reading_alphabet = args.reading_alphabet;
   if (!args.classifier.empty() && std::filesystem::exists(args.classifier)) {
     options.models.classifier = args.classifier;

@@ -56,4 +56,16 @@ std::vector<DbBox> dbBoxesFromProbability(const cv::Mat& probability, const DbOp
   return boxes;
 }
 
+std::vector<size_t> readingPriority(const std::vector<DbBox>& boxes, float confident_score) {
+  std::vector<size_t> order(boxes.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  auto rank = [&](size_t i) {
+    return std::make_pair(boxes[i].score >= confident_score,
+                          quadWidth(boxes[i].quad) * quadHeight(boxes[i].quad));
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return rank(a) > rank(b); });
+  return order;
+}
+
 }  // namespace parkloc::ocr

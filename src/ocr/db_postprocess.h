@@ -28,6 +28,11 @@ struct DbBox {
 // `probability` is CV_32F, one channel.
 std::vector<DbBox> dbBoxesFromProbability(const cv::Mat& probability, const DbOptions& options);
 
+// The order in which to read boxes under a read budget: those scoring at least
+// `confident_score` first, then the rest; the largest first within each (larger text reads
+// better). Indices into `boxes`; stable for equal keys.
+std::vector<size_t> readingPriority(const std::vector<DbBox>& boxes, float confident_score);
+
 // Grows a rectangle by DB's offset distance: area * ratio / perimeter on every side.
 cv::RotatedRect unclipRect(const cv::RotatedRect& rect, double unclip_ratio);
 

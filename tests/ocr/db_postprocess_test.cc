@@ -66,5 +66,24 @@ TEST(Unclip, GrowsEverySideByAreaTimesRatioOverPerimeter) {
   EXPECT_FLOAT_EQ(g.angle, 12.f);
 }
 
+TEST(ReadingPriority, ConfidentBoxesFirstThenTheLargest) {
+  auto box = [](float w, float h, float score) {
+    DbBox b;
+    b.quad = {cv::Point2f(0, 0), cv::Point2f(w, 0), cv::Point2f(w, h), cv::Point2f(0, h)};
+    b.score = score;
+    return b;
+  };
+  const std::vector<DbBox> boxes = {
+      box(100, 30, 0.4f),  // the largest, but weak
+      box(40, 10, 0.9f),   // confident, small
+      box(60, 20, 0.6f),   // confident, larger: exactly at the threshold
+      box(50, 10, 0.35f),  // weak, small
+  };
+  EXPECT_EQ(readingPriority(boxes, 0.6f), (std::vector<size_t>{2, 1, 0, 3}));
+  // Every box confident: the largest first, as with PaddleOCR's threshold alone.
+  EXPECT_EQ(readingPriority(boxes, 0.3f), (std::vector<size_t>{0, 2, 3, 1}));
+  EXPECT_TRUE(readingPriority({}, 0.6f).empty());
+}
+
 }  // namespace
 }  // namespace parkloc::ocr

@@ -256,20 +256,26 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
   const cv::Mat probability = detector->probability({resized})[0];
   const float sx = float(image.cols) / probability.cols, sy = float(image.rows) / probability.rows;
 
+  std::vector<DbBox> boxes = dbBoxesFromProbability(probability, *db);
+  for (DbBox& box : boxes)  // map pixels -> image pixels
+    for (auto& p : box.quad) p = {(p.x + 0.5f) * sx - 0.5f, (p.y + 0.5f) * sy - 0.5f};
+  if (request.max_reads > 0 && boxes.size() > static_cast<size_t>(request.max_reads)) {
+    // Under a read budget the confident boxes go first: the weaker ones that a low box
+    // threshold lets through are read only when the budget has room left.
+    std::vector<DbBox> first;
+    for (size_t i : readingPriority(boxes, options_.confident_box_score)) {
+      if (first.size() == static_cast<size_t>(request.max_reads)) break;
+      first.push_back(boxes[i]);
+    }
+    boxes = std::move(first);
+  }
   std::vector<ReadJob> jobs;
-  for (const DbBox& box : dbBoxesFromProbability(probability, *db)) {
+  for (const DbBox& box : boxes) {
     ReadJob job;
-    for (int k = 0; k < 4; ++k)
-      job.quad[k] = {(box.quad[k].x + 0.5f) * sx - 0.5f, (box.quad[k].y + 0.5f) * sy - 0.5f};
+    job.quad = box.quad;
     job.detection_score = box.score;
     job.lexicon = &request.lexicon;
     jobs.push_back(job);
-  }
-  if (request.max_reads > 0 && jobs.size() > static_cast<size_t>(request.max_reads)) {
-    auto area = [](const ReadJob& j) { return quadWidth(j.quad) * quadHeight(j.quad); };
-    std::stable_sort(jobs.begin(), jobs.end(),
-                     [&](const ReadJob& a, const ReadJob& b) { return area(a) > area(b); });
-    jobs.resize(static_cast<size_t>(request.max_reads));
   }
   auto read = readJobs(image, jobs, camera, options_, nets_->detector, nets_->recognizer,
                        nets_->direction ? &*nets_->direction : nullptr, nets_->charset);

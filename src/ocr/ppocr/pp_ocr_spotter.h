@@ -75,17 +75,32 @@ struct PpOcrOptions {
   // Post-processing for the fine-tuned floor detector: it was trained on DB's shrunk kernels
   // (r = 0.4, tools/detector_tuning/db_targets.py), which an unclip ratio of about 2 grows
   // back to the whole text box for text 3-4 times as long as high; PaddleOCR's own 1.5
-  // leaves boxes a fifth too low, and crops that cut into the glyphs read worse.
+  // leaves boxes a fifth too low, and crops that cut into the glyphs read worse. Its thin
+  // kernels also average less over their rectangle than PaddleOCR's (a clean upside-down
+  // number in a floor view: 0.54), so the box threshold is DB's binary threshold: the reading
+  // after it keeps a box only when the lexicon matches or the free reading is confident
+  // (min_text_confidence). Val split: parking-number detection F 0.753 -> 0.787, found and
+  // read 56.3 -> 57.0 % (docs/OCR.md, session 7).
   DbOptions floor_db = [] {
     DbOptions o;
     o.unclip_ratio = 2.0;
+    o.box_threshold = 0.3f;
     return o;
   }();
   FisheyeView view = FisheyeView::kGround;
   GroundViewOptions ground_view;
-  // The band detector's rows and post-processing (trained as the floor detector was).
+  // With SpotRequest::max_reads, boxes scoring at least this (PaddleOCR's box threshold) are
+  // read before the others: a search turn's two reads go to the boxes it would have read
+  // with that threshold.
+  float confident_box_score = 0.6f;
+  // The band detector's rows and post-processing (trained as the floor detector was; its
+  // box threshold stays DB's, as measured in session 6).
   RawBand band;
-  DbOptions band_db = floor_db;
+  DbOptions band_db = [] {
+    DbOptions o;
+    o.unclip_ratio = 2.0;
+    return o;
+  }();
   // Full-frame detection input: the longer side is scaled to this (multiple of 32).
   int detection_max_side = 960;
   int recognition_max_width = CtcRecognizer::kMaxWidth;  // crops are kHeight px tall

@@ -140,4 +140,14 @@ std::optional<Quad> refineOnGround(const cv::Mat& image, const Quad& quad,
   return out;
 }
 
+bool plausibleRefinement(const Quad& detected, const Quad& refined,
+                         const CornerRefinementOptions& options) {
+  if (quadWidth(refined) < options.min_length_share * quadWidth(detected)) return false;
+  const Quad limit = expandQuad(detected, 1.3f, 1.5f);
+  const std::vector<cv::Point2f> hull(limit.begin(), limit.end());
+  for (const auto& p : refined)
+    if (cv::pointPolygonTest(hull, p, false) < 0) return false;
+  return true;
+}
+
 }  // namespace parkloc::ocr

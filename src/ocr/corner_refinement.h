@@ -29,6 +29,10 @@ struct CornerRefinementOptions {
   // checks, not a contrast floor, keep noise out.
   double denoise_sigma_raw_px = 1.0;
   double min_contrast = 8.0;
+  // A fit shorter along the reading direction than this share of the box it refines has
+  // lost part of the text (blurred glyphs whose ink breaks apart), not tightened the box,
+  // which is then kept as it is: DB's boxes, unclipped, are about as long as the text.
+  float min_length_share = 0.7f;
 };
 
 // Ink outline points (raw image pixels) of the text inside `quad`; empty when no clear ink
@@ -46,5 +50,10 @@ std::optional<Quad> refineInCrop(const cv::Mat& image, const Quad& quad,
 std::optional<Quad> refineOnGround(const cv::Mat& image, const Quad& quad,
                                    const geometry::RigCamera& camera,
                                    const CornerRefinementOptions& options = {});
+
+// Whether `refined` is a plausible fit of the box `detected`: every corner inside the box
+// grown by a third along and a half across, and at least min_length_share of its length.
+bool plausibleRefinement(const Quad& detected, const Quad& refined,
+                         const CornerRefinementOptions& options = {});
 
 }  // namespace parkloc::ocr

@@ -91,20 +91,14 @@ namespace {
 
 // Reads every job: rectified crops (and their 180 degree turns where the direction is in
 // doubt) go through the recognizer in batches; each job keeps its better direction.
-// The refined corners when they are plausible: every corner inside the detected box grown
-// by a third.
+// The refined corners when they are plausible (plausibleRefinement), else the box.
 Quad refinedCorners(const cv::Mat& image, const Quad& quad, const PpOcrOptions& options,
                     const geometry::RigCamera* camera) {
   if (!options.refine_corners) return quad;
   std::optional<Quad> refined;
   if (camera != nullptr) refined = refineOnGround(image, quad, *camera, options.refinement);
   if (!refined) refined = refineInCrop(image, quad, options.refinement);
-  if (!refined) return quad;
-  const Quad limit = expandQuad(quad, 1.3f, 1.5f);
-  std::vector<cv::Point2f> hull(limit.begin(), limit.end());
-  for (const auto& p : *refined)
-    if (cv::pointPolygonTest(hull, p, false) < 0) return quad;
-  return *refined;
+  return refined && plausibleRefinement(quad, *refined, options.refinement) ? *refined : quad;
 }
 
 std::vector<std::optional<TextInstance>> readJobs(

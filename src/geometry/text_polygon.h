@@ -12,5 +12,7 @@ using TextPolygon = std::array<Eigen::Vector2d, 4>;
 // top and bottom edges). A text seen at a grazing angle is a thin sliver even when its side
 // edges are long, and this measure says so. 0 for a degenerate polygon.
 double apparentHeightPx(const TextPolygon& polygon);
+// Reading length in pixels: the mean of the top and bottom edges.
+double readingLengthPx(const TextPolygon& polygon);
 
 }  // namespace parkloc::geometry

@@ -39,8 +39,7 @@ bool isLegible(const geometry::TextPolygon& p, int characters, const ImageBlur& 
                const LegibilityOptions& options) {
   const double height = geometry::apparentHeightPx(p);
   if (!(height >= options.min_height_px)) return false;
-  const double length = 0.5 * ((p[1] - p[0]).norm() + (p[2] - p[3]).norm());
-  const double pitch = length / std::max(1, characters);
+  const double pitch = geometry::readingLengthPx(p) / std::max(1, characters);
   const Eigen::Vector2d along = (0.5 * (p[1] + p[2]) - 0.5 * (p[0] + p[3])).normalized();
   const Eigen::Vector2d across = (0.5 * (p[0] + p[1]) - 0.5 * (p[3] + p[2])).normalized();
   const double c = options.cycles_per_character;

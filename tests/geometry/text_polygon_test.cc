@@ -11,6 +11,11 @@ TEST(TextPolygon, ApparentHeightIsAreaOverReadingLength) {
   EXPECT_NEAR(apparentHeightPx({Eigen::Vector2d(0, 0), {100, 0}, {160, 5}, {60, 5}}), 5.0, 1e-9);
 }
 
+TEST(TextPolygon, ReadingLengthIsTheMeanOfTopAndBottom) {
+  // A trapezoid: top 100 px, bottom 60 px.
+  EXPECT_NEAR(readingLengthPx({Eigen::Vector2d(0, 0), {100, 0}, {80, 10}, {20, 10}}), 80.0, 1e-9);
+}
+
 TEST(TextPolygon, ADegeneratePolygonHasNoHeight) {
   const Eigen::Vector2d p(3, 4);
   EXPECT_EQ(apparentHeightPx({p, p, p, p}), 0.0);

@@ -89,8 +89,6 @@ std::vector<TextInstance> PpOcrSpotter::spot(const cv::Mat& image, const SpotReq
 
 namespace {
 
-// Reads every job: rectified crops (and their 180 degree turns where the direction is in
-// doubt) go through the recognizer in batches; each job keeps its better direction.
 // The refined corners when they are plausible (plausibleRefinement), else the box.
 Quad refinedCorners(const cv::Mat& image, const Quad& quad, const PpOcrOptions& options,
                     const geometry::RigCamera* camera) {
@@ -101,6 +99,8 @@ Quad refinedCorners(const cv::Mat& image, const Quad& quad, const PpOcrOptions& 
   return refined && plausibleRefinement(quad, *refined, options.refinement) ? *refined : quad;
 }
 
+// Reads every job: rectified crops (and their 180 degree turns where the direction is in
+// doubt) go through the recognizer in batches; each job keeps its better direction.
 std::vector<std::optional<TextInstance>> readJobs(
     const cv::Mat& image, const std::vector<ReadJob>& jobs, const geometry::RigCamera* camera,
     const PpOcrOptions& options, const DbDetector&, const CtcRecognizer& recognizer,

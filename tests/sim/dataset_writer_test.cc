@@ -58,11 +58,8 @@ TEST(DatasetWriter, WritesALoadableSequence) {
   fs::remove_all(out);
 }
 
-TEST(DatasetWriter, OneSplitHasTheSameGaragesAsTheWholeDataset) {
-  namespace fs = std::filesystem;
-  const fs::path base =
-      fs::temp_directory_path() / ("parkloc_sim_split_" + std::to_string(::getpid()));
-  fs::remove_all(base);
+// The demo garage twice: "ga" in the train split, "gb" in the test split.
+Scenario twoGarages() {
   Scenario s = demoScenario();
   s.garages[0].slots_per_row = 9;
   s.garages.push_back(s.garages[0]);
@@ -70,6 +67,15 @@ TEST(DatasetWriter, OneSplitHasTheSameGaragesAsTheWholeDataset) {
   s.garages[0].name = "ga";
   s.garages[1].split = "test";
   s.garages[1].name = "gb";
+  return s;
+}
+
+TEST(DatasetWriter, OneSplitHasTheSameGaragesAsTheWholeDataset) {
+  namespace fs = std::filesystem;
+  const fs::path base =
+      fs::temp_directory_path() / ("parkloc_sim_split_" + std::to_string(::getpid()));
+  fs::remove_all(base);
+  const Scenario s = twoGarages();
   auto metaOf = [](const fs::path& dir) {
     std::ifstream in(dir / "meta.json");
     return nlohmann::json::parse(in);
@@ -96,13 +102,7 @@ TEST(DatasetWriter, WritingOneSplitKeepsTheOthersListed) {
   const fs::path out =
       fs::temp_directory_path() / ("parkloc_sim_splits_" + std::to_string(::getpid()));
   fs::remove_all(out);
-  Scenario s = demoScenario();
-  s.garages[0].slots_per_row = 9;
-  s.garages.push_back(s.garages[0]);
-  s.garages[0].split = "train";
-  s.garages[0].name = "ga";
-  s.garages[1].split = "test";
-  s.garages[1].name = "gb";
+  const Scenario s = twoGarages();
   const auto plans = planSequences(s);
   auto splitsOf = [&] {
     std::ifstream in(out / "splits.json");

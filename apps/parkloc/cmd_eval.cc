@@ -26,6 +26,7 @@ struct EvalArgs {
   bool no_paper = false;
   bool no_oracle = false;
   bool no_lexicon = false;
+  bool whole_polygons = false;
   bool quiet = false;
   app::SpotterArgs spotter;
   std::string command_line;
@@ -38,6 +39,7 @@ void runEvalOcr(const EvalArgs& a) {
   eval::OcrRunOptions options;
   options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
   options.use_lexicon = !a.no_lexicon;
+  options.metrics.inside_image_only = !a.whole_polygons;
   options.progress = [&](const eval::Progress& p) { progress(p); };
   const eval::OcrEvaluation result = eval::evaluateOcr(sequences, *spotter, options);
   progress.finish();
@@ -117,6 +119,9 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   ocr_cmd->add_option("--max-frames", ocr_args->max_frames, "At most N frame sets per sequence")
       ->check(CLI::NonNegativeNumber);
   ocr_cmd->add_flag("--no-lexicon", ocr_args->no_lexicon, "Free reading only");
+  ocr_cmd->add_flag("--whole-polygons", ocr_args->whole_polygons,
+                    "Match whole label polygons, not only their parts inside the image (as "
+                    "until session 7)");
   ocr_cmd->add_flag("--quiet", ocr_args->quiet, "No progress on stderr");
   ocr_args->spotter.addTo(ocr_cmd);
   ocr_cmd->callback([ocr_args] { runEvalOcr(*ocr_args); });

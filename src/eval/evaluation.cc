@@ -52,7 +52,7 @@ std::vector<int> detectionCorrectness(const io::ImageLabels& labels,
     dont_care.push_back(l.occluded_fraction >= options.dont_care_occlusion || !l.legible);
   }
   for (const auto& d : detections) found.push_back(d.polygon);
-  const ImageMatching m = matchDetections(truths, dont_care, found, options.matching);
+  const ImageMatching m = matchDetections(truths, dont_care, found, matchingFor(options, labels));
   std::vector<int> out(detections.size(), 0);
   for (const MatchedPair& p : m.matches) {
     out[p.detection] = detections[p.detection].text == labels.instances[p.truth].text ? 1 : 0;

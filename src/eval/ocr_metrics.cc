@@ -44,6 +44,13 @@ double readingAngleDeg(const Quad& polygon) {
   return std::atan2(right.y - left.y, right.x - left.x) * 180.0 / M_PI;
 }
 
+MatchingOptions matchingFor(const OcrEvaluationOptions& options, const io::ImageLabels& labels) {
+  MatchingOptions out = options.matching;
+  if (options.inside_image_only && labels.width > 0 && labels.height > 0)
+    out.image_size = cv::Size(labels.width, labels.height);
+  return out;
+}
+
 namespace {
 
 // The counts of one image's matching: each cared-for truth, match, miss and false detection
@@ -111,17 +118,16 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
           geometry::apparentHeightPx(io::textPolygon(polygon)))]);
     return out;
   };
+  const MatchingOptions matching = matchingFor(options_, truth);
   countMatching(truth, detections, truth_quads, detection_quads, dont_care,
-                matchDetections(truth_quads, dont_care, detection_quads, options_.matching),
-                buckets);
+                matchDetections(truth_quads, dont_care, detection_quads, matching), buckets);
 
   auto by_class = [&](map::TextClass cls, const Quad&, const double*) {
     return std::vector<OcrCounts*>{&result_.height_rule_by_class[map::toString(cls)]};
   };
-  countMatching(
-      truth, detections, truth_quads, detection_quads, dont_care_by_height,
-      matchDetections(truth_quads, dont_care_by_height, detection_quads, options_.matching),
-      by_class);
+  countMatching(truth, detections, truth_quads, detection_quads, dont_care_by_height,
+                matchDetections(truth_quads, dont_care_by_height, detection_quads, matching),
+                by_class);
   ++result_.images;
   result_.spotting_seconds += spotting_seconds;
 }

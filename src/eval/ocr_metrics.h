@@ -68,7 +68,14 @@ struct OcrEvaluationOptions {
   // Instances at least this much occluded are "don't care" (the targets count instances
   // less than half occluded).
   double dont_care_occlusion = 0.5;
+  // Compare polygons by their parts inside the image (MatchingOptions::image_size): a
+  // number cut by the border is found when its visible part is. False: whole polygons, as
+  // until session 7.
+  bool inside_image_only = true;
 };
+
+// The matching options for one labelled image.
+MatchingOptions matchingFor(const OcrEvaluationOptions& options, const io::ImageLabels& labels);
 
 // The bins of OcrEvaluation::parking_numbers_by_height, in increasing order, and the bin of
 // an apparent height (geometry::apparentHeightPx, the simulator's legibility measure).

@@ -38,4 +38,15 @@ double polygonIoU(const Quad& a, const Quad& b) {
                     std::vector<cv::Point2f>(b.begin(), b.end()));
 }
 
+std::vector<cv::Point2f> clippedToImage(const std::vector<cv::Point2f>& polygon, cv::Size size) {
+  const std::vector<cv::Point2f> hull = convexHull(polygon);
+  if (polygonArea(hull) <= 0.0 || size.width <= 0 || size.height <= 0) return {};
+  const float right = size.width - 0.5f, bottom = size.height - 0.5f;
+  const std::vector<cv::Point2f> image = {
+      {-0.5f, -0.5f}, {right, -0.5f}, {right, bottom}, {-0.5f, bottom}};
+  std::vector<cv::Point2f> inside;
+  if (cv::intersectConvexConvex(hull, image, inside, true) <= 0.f) return {};
+  return inside;
+}
+
 }  // namespace parkloc::eval

@@ -17,4 +17,9 @@ double intersectionArea(const std::vector<cv::Point2f>& a, const std::vector<cv:
 double polygonIoU(const std::vector<cv::Point2f>& a, const std::vector<cv::Point2f>& b);
 double polygonIoU(const Quad& a, const Quad& b);
 
+// The part of a polygon's convex hull that lies inside an image of `size` pixels, whose
+// area is [-0.5, width - 0.5] x [-0.5, height - 0.5] (pixel centres at integers); empty
+// when nothing of it does.
+std::vector<cv::Point2f> clippedToImage(const std::vector<cv::Point2f>& polygon, cv::Size size);
+
 }  // namespace parkloc::eval

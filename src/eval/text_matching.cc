@@ -2,17 +2,31 @@
 
 #include <algorithm>
 #include <cassert>
+#include <optional>
 
 namespace parkloc::eval {
 namespace {
 
-std::vector<cv::Point2f> toVector(const Quad& q) { return {q.begin(), q.end()}; }
+// The polygons as compared: whole, or their parts inside the image.
+std::vector<std::vector<cv::Point2f>> compared(const std::vector<Quad>& quads,
+                                               const MatchingOptions& options) {
+  std::vector<std::vector<cv::Point2f>> out;
+  for (const Quad& q : quads) {
+    std::vector<cv::Point2f> polygon(q.begin(), q.end());
+    out.push_back(options.image_size ? clippedToImage(polygon, *options.image_size) : polygon);
+  }
+  return out;
+}
 
 }  // namespace
 
-ImageMatching matchDetections(const std::vector<Quad>& truths, const std::vector<bool>& dont_care,
-                              const std::vector<Quad>& detections, const MatchingOptions& options) {
-  assert(dont_care.size() == truths.size());
+ImageMatching matchDetections(const std::vector<Quad>& truth_quads,
+                              const std::vector<bool>& dont_care,
+                              const std::vector<Quad>& detection_quads,
+                              const MatchingOptions& options) {
+  assert(dont_care.size() == truth_quads.size());
+  const auto truths = compared(truth_quads, options);
+  const auto detections = compared(detection_quads, options);
   std::vector<MatchedPair> candidates;
   for (size_t t = 0; t < truths.size(); ++t) {
     if (dont_care[t]) continue;
@@ -36,12 +50,12 @@ ImageMatching matchDetections(const std::vector<Quad>& truths, const std::vector
   }
   for (size_t d = 0; d < detections.size(); ++d) {
     if (detection_used[d]) continue;
-    const std::vector<cv::Point2f> detection = toVector(detections[d]);
+    const std::vector<cv::Point2f>& detection = detections[d];
     const double own_area = polygonArea(detection);
     bool on_dont_care = false;
     for (size_t t = 0; t < truths.size() && !on_dont_care; ++t) {
       if (!dont_care[t]) continue;
-      const double overlap = intersectionArea(detection, toVector(truths[t]));
+      const double overlap = intersectionArea(detection, truths[t]);
       on_dont_care = (own_area > 0.0 && overlap / own_area > options.dont_care_min_coverage) ||
                      polygonIoU(detections[d], truths[t]) >= options.min_iou;
     }

@@ -14,6 +14,10 @@ struct MatchingOptions {
   // A detection that covers a don't-care instance with more than this share of its own area
   // is ignored (the ICDAR-2015 rule for '###' regions).
   double dont_care_min_coverage = 0.5;
+  // When set, polygons are compared by their parts inside an image of this size: a text
+  // cut by the image border is annotated by what the image shows, as ICDAR annotates
+  // (the simulator's label polygons run on outside the image).
+  std::optional<cv::Size> image_size;
 };
 
 struct MatchedPair {

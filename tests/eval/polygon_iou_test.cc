@@ -46,5 +46,16 @@ TEST(PolygonIoU, ReadingOrderDoesNotMatter) {
   EXPECT_NEAR(polygonIoU(a, flipped), 1.0, 1e-6);
 }
 
+TEST(ClippedToImage, KeepsThePartInsideTheImage) {
+  // A 20 x 10 box from x = -10.5: half of it lies left of a 100 x 50 image's edge at -0.5.
+  const Quad half_out = box(-10.5f, 10, 9.5f, 20);
+  const auto inside = clippedToImage({half_out.begin(), half_out.end()}, {100, 50});
+  EXPECT_NEAR(polygonArea(inside), 100.0, 1e-4);
+  // Wholly inside: unchanged in area; wholly outside: nothing.
+  const Quad in = box(10, 10, 30, 20), out = box(200, 10, 220, 20);
+  EXPECT_NEAR(polygonArea(clippedToImage({in.begin(), in.end()}, {100, 50})), 200.0, 1e-4);
+  EXPECT_TRUE(clippedToImage({out.begin(), out.end()}, {100, 50}).empty());
+}
+
 }  // namespace
 }  // namespace parkloc::eval

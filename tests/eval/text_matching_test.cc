@@ -9,6 +9,20 @@ Quad box(float x0, float y0, float x1, float y1) {
   return {cv::Point2f(x0, y0), cv::Point2f(x1, y0), cv::Point2f(x1, y1), cv::Point2f(x0, y1)};
 }
 
+TEST(TextMatching, ATextCutByTheImageBorderMatchesItsVisiblePart) {
+  // The label runs 40 px past a 100 x 50 image's right edge; the detection covers 36 of
+  // the 40 px inside: IoU 0.45 with the whole label, 0.9 with its part inside the image.
+  const std::vector<Quad> truths = {box(59.5f, 10, 139.5f, 20)};
+  const std::vector<Quad> detections = {box(63.5f, 10, 99.5f, 20)};
+  EXPECT_TRUE(matchDetections(truths, {false}, detections).matches.empty());
+  MatchingOptions options;
+  options.image_size = cv::Size(100, 50);
+  const ImageMatching m = matchDetections(truths, {false}, detections, options);
+  ASSERT_EQ(m.matches.size(), 1u);
+  EXPECT_NEAR(m.matches[0].iou, 0.9, 1e-4);
+  EXPECT_TRUE(m.false_detections.empty());
+}
+
 TEST(TextMatching, OneToOneAtIoUHalf) {
   const std::vector<Quad> truths = {box(0, 0, 10, 10), box(100, 0, 110, 10)};
   // d0 on t0 (IoU 0.81), d1 a duplicate of t0 (IoU 0.64, must not match twice), d2 far off.

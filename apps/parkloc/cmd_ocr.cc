@@ -34,6 +34,7 @@ void run(const OcrArgs& args) {
   using namespace parkloc;
   ocr::PpOcrOptions options = app::spotterOptions(args.spotter);
   options.models.classifier = args.spotter.classifier;  // a missing file is an error here
+  options.models.unread_classifier = args.spotter.unread_classifier;
   options.detection_max_side = args.det_side;
   options.direction =
       args.direction == "both" ? ocr::DirectionMode::kDecodeBoth : ocr::DirectionMode::kClassifier;

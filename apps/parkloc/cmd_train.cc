@@ -19,6 +19,7 @@ struct TrainArgs {
   size_t stride = 1;
   size_t max_frames = 0;
   int hidden = 8;
+  std::string text = "read";
   std::string eval_split = "val";
 };
 
@@ -36,6 +37,9 @@ parkloc::ocr::TextClassifier trainAndScore(const TrainArgs& args, float ratio, b
   options.features.expand_ratio = ratio;
   options.frame_stride = args.stride;
   options.max_frames_per_sequence = args.max_frames;
+  options.text = args.text == "unread" ? ocr::SampleText::kUnread
+                 : args.text == "both" ? ocr::SampleText::kBoth
+                                       : ocr::SampleText::kRead;
   const auto train =
       ocr::collectClassifierSamples(eval::splitSequences(args.dataset, "train"), options);
   if (train.labels.empty())
@@ -47,8 +51,11 @@ parkloc::ocr::TextClassifier trainAndScore(const TrainArgs& args, float ratio, b
   printScore(fmt::format("ratio {} train", ratio), ocr::scoreClassifier(classifier, train));
   const auto held_out =
       ocr::collectClassifierSamples(eval::splitSequences(args.dataset, args.eval_split), options);
-  printScore(fmt::format("ratio {} {}", ratio, args.eval_split),
-             ocr::scoreClassifier(classifier, held_out));
+  for (const bool unread : {false, true})
+    if (options.text == ocr::SampleText::kBoth ||
+        (options.text == ocr::SampleText::kUnread) == unread)
+      printScore(fmt::format("ratio {} {}, {}", ratio, args.eval_split, unread ? "unread" : "read"),
+                 ocr::scoreClassifier(classifier, held_out, unread));
   if (save) {
     classifier.save(args.out);
     std::cout << "wrote " << args.out << "\n";
@@ -71,6 +78,11 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--max-frames", args->max_frames, "At most N frame sets per sequence (0: all)")
       ->capture_default_str();
   cmd->add_option("--hidden", args->hidden, "Hidden units of the MLP")->capture_default_str();
+  cmd->add_option("--text", args->text,
+                  "Samples: 'read' (the labelled text), 'unread' (no text: the head for boxes "
+                  "nothing could read) or 'both'")
+      ->check(CLI::IsMember({"read", "unread", "both"}))
+      ->capture_default_str();
   cmd->add_option("--eval-split", args->eval_split, "Split to score on")->capture_default_str();
   cmd->callback([args] {
     trainAndScore(*args, args->ratio, true);

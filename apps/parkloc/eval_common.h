@@ -34,6 +34,8 @@ inline std::string recognizerPath(const std::string& value, const std::string& m
 struct SpotterArgs {
   std::string models = PARKLOC_MODEL_DIR;
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
+  std::string unread_classifier =
+      std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier_unread.yml";
   std::string floor_detector = "tuned";  // '', 'tuned' or a path (floorDetectorPath)
   std::string recognizer;                // '', 'tuned' or a path (recognizerPath)
   std::string band_detector;             // '', 'tuned' or a path (bandDetectorPath)
@@ -42,11 +44,15 @@ struct SpotterArgs {
   float floor_box_threshold = ocr::PpOcrOptions{}.floor_db.box_threshold;
   float floor_binary_threshold = ocr::PpOcrOptions{}.floor_db.binary_threshold;
   std::string reading_alphabet = ocr::PpOcrOptions{}.reading_alphabet;
+  float min_text_confidence = ocr::PpOcrOptions{}.min_text_confidence;
 
   void addTo(CLI::App* cmd) {
     cmd->add_option("--models", models, "Folder with the PP-OCRv4 ONNX models")
         ->capture_default_str();
     cmd->add_option("--classifier", classifier, "Text classifier (YAML); '' for none")
+        ->capture_default_str();
+    cmd->add_option("--unread-classifier", unread_classifier,
+                    "Text classifier for boxes nothing could read (YAML); '' for --classifier")
         ->capture_default_str();
     cmd->add_option(
            "--floor-detector", floor_detector,
@@ -87,6 +93,11 @@ struct SpotterArgs {
     cmd->add_option("--reading-alphabet", reading_alphabet,
                     "Characters of a free reading besides the lexicon's ('' for all 6625)")
         ->capture_default_str();
+    cmd->add_option("--min-text-confidence", min_text_confidence,
+                    "A box whose reading matches no lexicon entry is kept when its free "
+                    "reading is at least this confident")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
     cmd->add_option("--floor-view-resolution", floor_view.resolution,
                     "Floor view: metres per pixel")
         ->check(CLI::Range(0.005, 0.1))
@@ -106,9 +117,12 @@ inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   options.floor_db.box_threshold = args.floor_box_threshold;
   options.floor_db.binary_threshold = args.floor_binary_threshold;
   options.reading_alphabet = args.reading_alphabet;
+  options.min_text_confidence = args.min_text_confidence;
   if (!args.classifier.empty() && std::filesystem::exists(args.classifier)) {
     options.models.classifier = args.classifier;
   }
+  if (!args.unread_classifier.empty() && std::filesystem::exists(args.unread_classifier))
+    options.models.unread_classifier = args.unread_classifier;
   return options;
 }
 

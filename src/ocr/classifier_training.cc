@@ -25,8 +25,13 @@ ClassifierSamples collectClassifierSamples(const std::vector<std::string>& seque
             continue;
           const Quad quad = io::pointQuad(inst.polygon);
           if (quadHeight(quad) < 4.f || quadWidth(quad) < 4.f) continue;
-          rows.push_back(classifierFeatures(image, quad, inst.text, options.features));
-          out.labels.push_back(inst.cls);
+          for (const bool unread : {false, true}) {
+            if (options.text == (unread ? SampleText::kRead : SampleText::kUnread)) continue;
+            rows.push_back(
+                classifierFeatures(image, quad, unread ? "" : inst.text, options.features));
+            out.labels.push_back(inst.cls);
+            out.unread.push_back(unread);
+          }
         }
       }
     }
@@ -42,10 +47,11 @@ double ClassifierScore::classAccuracy(map::TextClass c) const {
   return total ? double(confusion[t][t]) / total : 0.0;
 }
 
-ClassifierScore scoreClassifier(const TextClassifier& classifier,
-                                const ClassifierSamples& samples) {
+ClassifierScore scoreClassifier(const TextClassifier& classifier, const ClassifierSamples& samples,
+                                std::optional<bool> unread) {
   ClassifierScore score;
   for (int i = 0; i < samples.features.rows; ++i) {
+    if (unread && samples.unread[i] != *unread) continue;
     const auto predicted = classifier.predict(samples.features.row(i)).first;
     const int t = static_cast<int>(samples.labels[i]), p = static_cast<int>(predicted);
     ++score.confusion[t][p];

@@ -64,9 +64,12 @@ std::string describe(const TextInstance& inst) {
   std::string corners;
   for (const auto& p : inst.polygon) corners += fmt::format(" ({:.1f},{:.1f})", p.x, p.y);
   return fmt::format("{:<10} [{}] rec {:.2f} det {:.2f} cls {:.2f} ({}; raw {}) TL,TR,BR,BL:{}",
-                     inst.text, map::toString(inst.cls), inst.recognition_score,
-                     inst.detection_score, inst.class_score,
-                     inst.lexicon_match ? "lexicon" : "free", inst.raw_text, corners);
+                     inst.text.empty() ? "(unread)" : inst.text, map::toString(inst.cls),
+                     inst.recognition_score, inst.detection_score, inst.class_score,
+                     inst.lexicon_match  ? "lexicon"
+                     : inst.text.empty() ? "unread"
+                                         : "free",
+                     inst.raw_text, corners);
 }
 
 cv::Mat drawInstances(const cv::Mat& image, const std::vector<TextInstance>& instances) {

@@ -16,7 +16,10 @@ struct TextInstance {
   // Image pixels, reading order: top-left, top-right, bottom-right, bottom-left of the
   // text as it reads (so an upside-down number has its top-left at the bottom right).
   std::array<cv::Point2f, 4> polygon;
-  std::string text;      // the lexicon entry when one matched, else the raw reading
+  // The lexicon entry when one matched, else the raw reading when it is confident, else
+  // empty: text the detector is sure of that nothing could read (see
+  // PpOcrOptions::confident_box_score).
+  std::string text;
   std::string raw_text;  // greedy CTC reading
   bool lexicon_match = false;
   map::TextClass cls = map::TextClass::kOther;

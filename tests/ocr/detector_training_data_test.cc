@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "sim/dataset_writer.h"
+#include "small_sequence.h"
 
 namespace parkloc::ocr {
 namespace {
@@ -46,17 +46,7 @@ std::optional<LabelLine> parseLine(const std::string& line) {
   return out;
 }
 
-// A two-frame-set sequence of the demo garage under `root`/dataset; returns its folder.
-std::string writeSmallSequence(const fs::path& root) {
-  fs::remove_all(root);
-  sim::Scenario scenario = sim::demoScenario();
-  scenario.garages[0].slots_per_row = 9;
-  sim::DatasetOptions dataset;
-  dataset.out_dir = (root / "dataset").string();
-  dataset.max_frames = 2;
-  sim::writeDataset(scenario, dataset);
-  return (root / "dataset" / "sequences" / sim::planSequences(scenario)[0].name).string();
-}
+using testing::writeSmallSequence;
 
 TEST(DetectorTrainingData, WritesGroundViewsWithTheirTextPolygons) {
   const fs::path root =

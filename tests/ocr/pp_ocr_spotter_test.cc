@@ -186,6 +186,34 @@ TEST(PpOcrSpotterModels, TheTunedFloorDetectorReadsFloorTextThroughTheFisheye) {
   EXPECT_LT(maxCornerError(spot.found[0].polygon, spot.truth), 2.0);
 }
 
+// No reading is sure enough here (min_text_confidence above 1): the floor detector's box,
+// clean and confident, is still reported, as unread text; a box under confident_box_score
+// is not.
+TEST(PpOcrSpotterModels, AConfidentFloorBoxIsReportedUnreadWhenNoReadingIsSure) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.models.floor_detection = floorDetectorIn(PARKLOC_MODEL_DIR);
+  options.min_text_confidence = 1.5f;
+  const auto rig = geometry::defaultRig();
+  const auto* left = rig.find("left");
+  const auto scene = testing::renderFloorText(*left, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
+  SpotRequest request;
+  request.camera = left;
+  {
+    PpOcrSpotter spotter(options);
+    const auto found = spotter.spot(scene.image, request);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_TRUE(found[0].text.empty());
+    EXPECT_FALSE(found[0].lexicon_match);
+    EXPECT_EQ(found[0].raw_text, "B2-117");
+    EXPECT_GE(found[0].detection_score, options.confident_box_score);
+    EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), 2.0);
+  }
+  options.confident_box_score = 1.5f;
+  PpOcrSpotter spotter(options);
+  EXPECT_TRUE(spotter.spot(scene.image, request).empty());
+}
+
 TEST(PpOcrSpotterModels, TheTunedRecognizerReadsFloorTextThroughTheFisheye) {
   auto models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
   models.recognition = tunedRecognizerIn(PARKLOC_MODEL_DIR);

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "sim/dataset_writer.h"
+#include "small_sequence.h"
 
 namespace parkloc::ocr {
 namespace {
@@ -45,14 +45,7 @@ class RecognizerTrainingData : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     root_ = fs::temp_directory_path() / ("parkloc_recognizer_data_" + std::to_string(::getpid()));
-    fs::remove_all(root_);
-    sim::Scenario scenario = sim::demoScenario();
-    scenario.garages[0].slots_per_row = 9;
-    sim::DatasetOptions dataset;
-    dataset.out_dir = (root_ / "dataset").string();
-    dataset.max_frames = 2;
-    sim::writeDataset(scenario, dataset);
-    sequence_ = (root_ / "dataset" / "sequences" / sim::planSequences(scenario)[0].name).string();
+    sequence_ = testing::writeSmallSequence(root_);
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
 

@@ -35,6 +35,12 @@ struct PpOcrSpotter::Networks {
   std::optional<DirectionClassifier> direction;
   Charset charset;
   TextClassifier classifier;
+  TextClassifier unread_classifier;  // empty: `classifier` classifies unread boxes too
+
+  // The class head for an instance: the unread head when nothing was read.
+  const TextClassifier& headFor(const TextInstance& instance) const {
+    return instance.text.empty() && !unread_classifier.empty() ? unread_classifier : classifier;
+  }
 };
 
 namespace {
@@ -60,6 +66,9 @@ struct ReadJob {
   float detection_score = 0.f;
   const std::vector<std::string>* lexicon = nullptr;
   bool try_both_directions = true;
+  // The detector is sure of this box: it is reported even when its reading is not
+  // (text empty, raw_text the greedy reading).
+  bool keep_unread = false;
 };
 
 }  // namespace
@@ -69,7 +78,7 @@ PpOcrSpotter::PpOcrSpotter(const PpOcrOptions& options) : options_(options) {
   nets_ = std::unique_ptr<Networks>(
       new Networks{DbDetector(m.detection, options.onnx), std::nullopt, std::nullopt,
                    CtcRecognizer(m.recognition, options.onnx), std::nullopt,
-                   Charset::fromDictionaryFile(m.dictionary), TextClassifier()});
+                   Charset::fromDictionaryFile(m.dictionary), TextClassifier(), TextClassifier()});
   freeReadingClasses(options.reading_alphabet, {}, nets_->charset);  // a foreign character throws
   if (!m.floor_detection.empty()) nets_->floor_detector.emplace(m.floor_detection, options.onnx);
   if (!m.band_detection.empty()) {
@@ -78,6 +87,8 @@ PpOcrSpotter::PpOcrSpotter(const PpOcrOptions& options) : options_(options) {
   }
   if (!m.direction.empty()) nets_->direction.emplace(m.direction, options.onnx);
   if (!m.classifier.empty()) nets_->classifier = TextClassifier::load(m.classifier);
+  if (!m.unread_classifier.empty())
+    nets_->unread_classifier = TextClassifier::load(m.unread_classifier);
 }
 
 PpOcrSpotter::~PpOcrSpotter() = default;
@@ -198,14 +209,15 @@ std::vector<std::optional<TextInstance>> readJobs(
   for (size_t i = 0; i < jobs.size(); ++i) {
     const Best& b = best[i];
     const LexiconDecoding& d = b.decoding;
-    if (!d.matched && (d.raw_text.empty() || d.raw_confidence < options.min_text_confidence))
-      continue;
+    const bool read =
+        d.matched || (!d.raw_text.empty() && d.raw_confidence >= options.min_text_confidence);
+    if (!read && !jobs[i].keep_unread) continue;
     TextInstance inst;
     inst.polygon = refinedCorners(image, b.turned ? shiftedBy180(jobs[i].quad) : jobs[i].quad,
                                   options, camera);
     inst.raw_text = d.raw_text;
     inst.lexicon_match = d.matched;
-    inst.text = d.matched ? (*jobs[i].lexicon)[d.best_index] : d.raw_text;
+    inst.text = d.matched ? (*jobs[i].lexicon)[d.best_index] : read ? d.raw_text : "";
     inst.recognition_score = d.matched ? static_cast<float>(d.posterior) : d.raw_confidence;
     inst.detection_score = jobs[i].detection_score;
     out[i] = std::move(inst);
@@ -269,6 +281,7 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     job.quad = box.quad;
     job.detection_score = box.score;
     job.lexicon = &request.lexicon;
+    job.keep_unread = role == DetectorRole::kFloorView && box.score >= options_.confident_box_score;
     jobs.push_back(job);
   }
   auto read = readJobs(image, jobs, camera, options_, nets_->detector, nets_->recognizer,
@@ -337,7 +350,7 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
   if (!ground || options_.view == FisheyeView::kGroundAndRaw)
     addUnseen(detectAndRead(image, request, request.camera, DetectorRole::kScene));
   for (TextInstance& inst : out) {
-    const auto [cls, score] = nets_->classifier.classify(image, inst.polygon, inst.text);
+    const auto [cls, score] = nets_->headFor(inst).classify(image, inst.polygon, inst.text);
     inst.cls = cls;
     inst.class_score = score;
   }

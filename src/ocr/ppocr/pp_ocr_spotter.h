@@ -51,6 +51,10 @@ struct PpOcrModelPaths {
   std::string direction;  // empty: decide the direction by decoding both
   std::string dictionary;
   std::string classifier;  // empty: every instance is TextClass::kOther with score 0
+  // The head for unread boxes (text empty: PpOcrOptions::confident_box_score), trained on
+  // the pixels and the box alone (`parkloc train classifier --text unread`): the reading's
+  // features that the other head leans on are missing. Empty: `classifier` serves them too.
+  std::string unread_classifier;
 
   // The PaddleOCR file names inside `dir` (and no classifier, no floor detector).
   static PpOcrModelPaths inDirectory(const std::string& dir);
@@ -77,10 +81,10 @@ struct PpOcrOptions {
   // back to the whole text box for text 3-4 times as long as high; PaddleOCR's own 1.5
   // leaves boxes a fifth too low, and crops that cut into the glyphs read worse. Its thin
   // kernels also average less over their rectangle than PaddleOCR's (a clean upside-down
-  // number in a floor view: 0.54), so the box threshold is DB's binary threshold: the reading
-  // after it keeps a box only when the lexicon matches or the free reading is confident
-  // (min_text_confidence). Val split: parking-number detection F 0.753 -> 0.787, found and
-  // read 56.3 -> 57.0 % (docs/OCR.md, session 7).
+  // number in a floor view: 0.54), so the box threshold is DB's binary threshold: a box
+  // under confident_box_score is kept only when the lexicon matches or the free reading is
+  // confident (min_text_confidence). Val split: parking-number detection F 0.753 -> 0.787, found
+  // and read 56.3 -> 57.0 % (docs/OCR.md, session 7).
   DbOptions floor_db = [] {
     DbOptions o;
     o.unclip_ratio = 2.0;
@@ -89,9 +93,13 @@ struct PpOcrOptions {
   }();
   FisheyeView view = FisheyeView::kGround;
   GroundViewOptions ground_view;
-  // With SpotRequest::max_reads, boxes scoring at least this (PaddleOCR's box threshold) are
-  // read before the others: a search turn's two reads go to the boxes it would have read
-  // with that threshold.
+  // Floor-view boxes scoring at least this (PaddleOCR's own box threshold) are text by the
+  // detector's standard. With SpotRequest::max_reads they are read before the others (a
+  // search turn's two reads go to the boxes it would have read with that threshold), and
+  // they are reported even when no reading is confident, as unread text (`text` empty):
+  // a number in a font the recognizer misreads is still a number found. Weaker boxes are
+  // reported only when read (min_text_confidence). Val split, first 40 frame sets a drive:
+  // parking-number recall 72.0 -> 76.5 % (docs/OCR.md, session 8).
   float confident_box_score = 0.6f;
   // The band detector's rows and post-processing (trained as the floor detector was; its
   // box threshold stays DB's, as measured in session 6).
@@ -115,7 +123,8 @@ struct PpOcrOptions {
   // Re-fit the corners to the ink (on the ground plane when SpotRequest::camera is set).
   bool refine_corners = true;
   CornerRefinementOptions refinement;
-  // Free readings (no lexicon match) below this mean confidence are dropped as non-text.
+  // Free readings (no lexicon match) below this mean confidence are dropped as non-text,
+  // unless the detector is sure of the box (confident_box_score).
   float min_text_confidence = 0.6f;
   // Map-guided spotting: the region is expanded to at least these multiples of its text
   // size and warped to a patch of this size (the patch keeps the text's aspect ratio).

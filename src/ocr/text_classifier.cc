@@ -147,29 +147,33 @@ TextClassifier TextClassifier::load(const std::string& path) {
   return out;
 }
 
-std::pair<map::TextClass, float> TextClassifier::predict(const cv::Mat& feature_row) const {
+std::pair<map::TextClass, float> TextClassifier::predict(const cv::Mat& feature_row,
+                                                         const AllowedClasses& allowed) const {
   if (empty()) return {map::TextClass::kOther, 0.f};
   cv::Mat x = (feature_row - mean_).mul(inv_std_);
   cv::Mat response;
   mlp_->predict(x, response);
-  // Softmax over the outputs as a score; the outputs are in (-1.7, 1.7).
+  // Softmax over the allowed outputs as a score; the outputs are in (-1.7, 1.7).
   double best = -1e9, sum = 0.0;
-  int best_class = 0;
+  int best_class = -1;
   for (int c = 0; c < response.cols; ++c) {
     const double v = response.at<float>(0, c);
-    if (v > best) {
+    if (allowed[c] && v > best) {
       best = v;
       best_class = c;
     }
   }
-  for (int c = 0; c < response.cols; ++c) sum += std::exp(3.0 * (response.at<float>(0, c) - best));
+  if (best_class < 0) return {map::TextClass::kOther, 0.f};  // nothing allowed
+  for (int c = 0; c < response.cols; ++c)
+    if (allowed[c]) sum += std::exp(3.0 * (response.at<float>(0, c) - best));
   return {static_cast<map::TextClass>(best_class), static_cast<float>(1.0 / sum)};
 }
 
 std::pair<map::TextClass, float> TextClassifier::classify(const cv::Mat& image, const Quad& quad,
-                                                          const std::string& text) const {
+                                                          const std::string& text,
+                                                          const AllowedClasses& allowed) const {
   if (empty()) return {map::TextClass::kOther, 0.f};
-  return predict(classifierFeatures(image, quad, text, options_));
+  return predict(classifierFeatures(image, quad, text, options_), allowed);
 }
 
 }  // namespace parkloc::ocr

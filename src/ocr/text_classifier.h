@@ -4,6 +4,7 @@
 // surroundings (floor paint vs pillar face), plus simple shape features of the reading.
 // A small multilayer perceptron (cv::ml::ANN_MLP) on HOG + colour + text features, trained
 // by `parkloc train classifier` and stored as one YAML file.
+#include <array>
 #include <opencv2/core.hpp>
 #include <opencv2/ml.hpp>
 #include <string>
@@ -26,6 +27,12 @@ struct ClassifierFeatureOptions {
 cv::Mat classifierFeatures(const cv::Mat& image, const Quad& quad, const std::string& text,
                            const ClassifierFeatureOptions& options);
 
+// Which classes an instance may take, indexed by map::TextClass.
+using AllowedClasses = std::array<bool, 3>;
+inline constexpr AllowedClasses kAnyClass = {true, true, true};
+// Text found on the floor: a parking number or other floor text, never a pillar's.
+inline constexpr AllowedClasses kFloorClasses = {false, true, true};
+
 struct ClassifierTrainOptions {
   int hidden_units = 8;
   int max_iterations = 400;
@@ -46,10 +53,13 @@ class TextClassifier {
   static TextClassifier load(const std::string& path);
   void save(const std::string& path) const;
 
-  // Class and its softmax-normalised score for one feature row.
-  std::pair<map::TextClass, float> predict(const cv::Mat& feature_row) const;
+  // Class and its softmax-normalised score for one feature row, among the allowed classes
+  // (where the text was found can rule some out: pillar text is not on the floor).
+  std::pair<map::TextClass, float> predict(const cv::Mat& feature_row,
+                                           const AllowedClasses& allowed = kAnyClass) const;
   std::pair<map::TextClass, float> classify(const cv::Mat& image, const Quad& quad,
-                                            const std::string& text) const;
+                                            const std::string& text,
+                                            const AllowedClasses& allowed = kAnyClass) const;
 
  private:
   ClassifierFeatureOptions options_;

@@ -53,8 +53,8 @@ Sample makeSample(int kind, std::mt19937& rng) {
   return s;
 }
 
-TEST(TextClassifier, LearnsSeparableClassesAndSurvivesASaveLoadRoundTrip) {
-  std::mt19937 rng(11);
+// A classifier trained on 60 samples, 20 of each class.
+TextClassifier trainedOnSamples(std::mt19937& rng) {
   ClassifierFeatureOptions features;
   std::vector<cv::Mat> rows;
   std::vector<map::TextClass> labels;
@@ -65,7 +65,12 @@ TEST(TextClassifier, LearnsSeparableClassesAndSurvivesASaveLoadRoundTrip) {
   }
   cv::Mat x;
   cv::vconcat(rows, x);
-  const TextClassifier classifier = TextClassifier::train(x, labels, features);
+  return TextClassifier::train(x, labels, features);
+}
+
+TEST(TextClassifier, LearnsSeparableClassesAndSurvivesASaveLoadRoundTrip) {
+  std::mt19937 rng(11);
+  const TextClassifier classifier = trainedOnSamples(rng);
 
   const auto path = (std::filesystem::temp_directory_path() /
                      ("parkloc_classifier_test_" + std::to_string(::getpid()) + ".yml"))
@@ -85,6 +90,26 @@ TEST(TextClassifier, LearnsSeparableClassesAndSurvivesASaveLoadRoundTrip) {
     EXPECT_LE(score, 1.f);
   }
   EXPECT_GE(correct, 28);
+}
+
+TEST(TextClassifier, ChoosesOnlyAmongTheAllowedClasses) {
+  std::mt19937 rng(11);
+  const TextClassifier classifier = trainedOnSamples(rng);
+  for (int i = 0; i < 9; ++i) {
+    const Sample s = makeSample(i % 3, rng);
+    const auto any = classifier.classify(s.image, s.quad, s.text);
+    const auto floor = classifier.classify(s.image, s.quad, s.text, kFloorClasses);
+    EXPECT_NE(floor.first, map::TextClass::kPillar);
+    if (any.first != map::TextClass::kPillar) {
+      // The pillar output no longer shares the softmax: same class, a score at least as high.
+      EXPECT_EQ(floor.first, any.first);
+      EXPECT_GE(floor.second, any.second - 1e-6f);
+    }
+    EXPECT_GT(floor.second, 0.f);
+    EXPECT_LE(floor.second, 1.f);
+  }
+  const Sample s = makeSample(0, rng);
+  EXPECT_EQ(classifier.classify(s.image, s.quad, s.text, {false, false, false}).second, 0.f);
 }
 
 TEST(TextClassifier, MissingOrForeignFileIsAnInputError) {

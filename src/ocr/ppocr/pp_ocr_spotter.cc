@@ -306,6 +306,7 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
                       request.camera->model.width == image.cols &&
                       request.camera->model.height == image.rows;
   std::vector<TextInstance> out;
+  size_t on_floor = 0;  // out[0, on_floor) came from the floor view
   if (ground) {
     // Floor text, found and read in the bird's-eye view, its corners mapped back to raw.
     const GroundView& view = groundView(*request.camera);
@@ -324,6 +325,7 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
       inst.polygon = refinedCorners(image, inst.polygon, options_, request.camera);
       out.push_back(std::move(inst));
     }
+    on_floor = out.size();
   }
   // Raw-image detections already found (their centre inside a polygon found before) are
   // dropped.
@@ -349,8 +351,10 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
   }
   if (!ground || options_.view == FisheyeView::kGroundAndRaw)
     addUnseen(detectAndRead(image, request, request.camera, DetectorRole::kScene));
-  for (TextInstance& inst : out) {
-    const auto [cls, score] = nets_->headFor(inst).classify(image, inst.polygon, inst.text);
+  for (size_t i = 0; i < out.size(); ++i) {
+    TextInstance& inst = out[i];
+    const auto [cls, score] = nets_->headFor(inst).classify(
+        image, inst.polygon, inst.text, i < on_floor ? kFloorClasses : kAnyClass);
     inst.cls = cls;
     inst.class_score = score;
   }

@@ -36,9 +36,10 @@ struct SpotterArgs {
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
   std::string unread_classifier =
       std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier_unread.yml";
-  std::string floor_detector = "tuned";  // '', 'tuned' or a path (floorDetectorPath)
-  std::string recognizer;                // '', 'tuned' or a path (recognizerPath)
-  std::string band_detector;             // '', 'tuned' or a path (bandDetectorPath)
+  std::string floor_detector = "tuned";       // '', 'tuned' or a path (floorDetectorPath)
+  std::string recognizer;                     // '', 'tuned' or a path (recognizerPath)
+  std::string band_detector;                  // '', 'tuned' or a path (bandDetectorPath)
+  std::string fallback_recognizer = "tuned";  // '', 'tuned' or a path (recognizerPath)
   ocr::GroundViewOptions floor_view;
   double floor_unclip_ratio = ocr::PpOcrOptions{}.floor_db.unclip_ratio;
   float floor_box_threshold = ocr::PpOcrOptions{}.floor_db.box_threshold;
@@ -66,6 +67,10 @@ struct SpotterArgs {
     cmd->add_option("--recognizer", recognizer,
                     "Recognizer: '' PaddleOCR's own (default), 'tuned' the one parkloc "
                     "fine-tuned (in --models), or an ONNX file");
+    cmd->add_option("--fallback-recognizer", fallback_recognizer,
+                    "Second recognizer for the crops the first matches to no lexicon entry: "
+                    "'tuned' the one parkloc fine-tuned (in --models), '' none, or an ONNX file")
+        ->capture_default_str();
     cmd->add_option("--floor-view-near", floor_view.near,
                     "Floor view: where it starts, metres ahead of a camera (negative: behind)")
         ->check(CLI::Range(-5.0, 5.0))
@@ -112,6 +117,8 @@ inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   options.models.floor_detection = floorDetectorPath(args.floor_detector, args.models);
   options.models.recognition = recognizerPath(args.recognizer, args.models);
   options.models.band_detection = bandDetectorPath(args.band_detector, args.models);
+  if (!args.fallback_recognizer.empty())
+    options.models.fallback_recognition = recognizerPath(args.fallback_recognizer, args.models);
   options.ground_view = args.floor_view;
   options.floor_db.unclip_ratio = args.floor_unclip_ratio;
   options.floor_db.box_threshold = args.floor_box_threshold;

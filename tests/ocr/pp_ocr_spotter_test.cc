@@ -214,6 +214,27 @@ TEST(PpOcrSpotterModels, AConfidentFloorBoxIsReportedUnreadWhenNoReadingIsSure) 
   EXPECT_TRUE(spotter.spot(scene.image, request).empty());
 }
 
+TEST(PpOcrSpotterModels, AFallbackRecognizerLeavesWhatTheFirstMatchedAsItWas) {
+  auto models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  models.fallback_recognition = tunedRecognizerIn(PARKLOC_MODEL_DIR);
+  const auto spot = spotOnTheLeftFloor(models);
+  ASSERT_EQ(spot.found.size(), 1u);
+  EXPECT_EQ(spot.found[0].text, "B2-117");
+  EXPECT_TRUE(spot.found[0].lexicon_match);
+  EXPECT_LT(maxCornerError(spot.found[0].polygon, spot.truth), 2.0);
+
+  models.fallback_recognition = "/nonexistent/fallback_rec.onnx";
+  PpOcrOptions options;
+  options.models = models;
+  try {
+    PpOcrSpotter spotter(options);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/fallback_rec.onnx"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(PpOcrSpotterModels, TheTunedRecognizerReadsFloorTextThroughTheFisheye) {
   auto models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
   models.recognition = tunedRecognizerIn(PARKLOC_MODEL_DIR);

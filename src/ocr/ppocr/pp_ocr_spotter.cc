@@ -36,6 +36,7 @@ struct PpOcrSpotter::Networks {
   Charset charset;
   TextClassifier classifier;
   TextClassifier unread_classifier;  // empty: `classifier` classifies unread boxes too
+  std::optional<CtcRecognizer> fallback_recognizer;  // empty: none
 
   // The class head for an instance: the unread head when nothing was read.
   const TextClassifier& headFor(const TextInstance& instance) const {
@@ -86,6 +87,8 @@ PpOcrSpotter::PpOcrSpotter(const PpOcrOptions& options) : options_(options) {
     nets_->band_detector.emplace(m.band_detection, options.onnx);
   }
   if (!m.direction.empty()) nets_->direction.emplace(m.direction, options.onnx);
+  if (!m.fallback_recognition.empty())
+    nets_->fallback_recognizer.emplace(m.fallback_recognition, options.onnx);
   if (!m.classifier.empty()) nets_->classifier = TextClassifier::load(m.classifier);
   if (!m.unread_classifier.empty())
     nets_->unread_classifier = TextClassifier::load(m.unread_classifier);
@@ -115,7 +118,8 @@ Quad refinedCorners(const cv::Mat& image, const Quad& quad, const PpOcrOptions& 
 std::vector<std::optional<TextInstance>> readJobs(
     const cv::Mat& image, const std::vector<ReadJob>& jobs, const geometry::RigCamera* camera,
     const PpOcrOptions& options, const DbDetector&, const CtcRecognizer& recognizer,
-    const DirectionClassifier* direction, const Charset& charset) {
+    const DirectionClassifier* direction, const Charset& charset,
+    const CtcRecognizer* fallback_recognizer = nullptr) {
   std::vector<cv::Mat> upright(jobs.size());
   for (size_t i = 0; i < jobs.size(); ++i)
     upright[i] = rectifiedCrop(image, jobs[i].quad, CtcRecognizer::kHeight,
@@ -174,8 +178,9 @@ std::vector<std::optional<TextInstance>> readJobs(
     return classes_of.back().second;
   };
   auto decodeAll = [&](const std::vector<cv::Mat>& batch,
-                       const std::vector<std::pair<size_t, bool>>& from) {
-    const auto outputs = recognizer.recognize(batch, options.recognition_batch);
+                       const std::vector<std::pair<size_t, bool>>& from,
+                       const CtcRecognizer& reader, bool matches_only) {
+    const auto outputs = reader.recognize(batch, options.recognition_batch);
     for (size_t k = 0; k < outputs.size(); ++k) {
       const auto [job, turned] = from[k];
       const auto& lexicon = jobs[job].lexicon ? *jobs[job].lexicon : kNoLexicon;
@@ -185,10 +190,11 @@ std::vector<std::optional<TextInstance>> readJobs(
       // a lexicon match beats a free reading.
       const double score = (d.matched ? 1e6 : 0.0) +
                            (d.matched ? std::max(d.best_log_prob, d.raw_log_prob) : d.raw_log_prob);
+      if (matches_only && !d.matched) continue;
       if (score > best[job].score) best[job] = {score, std::move(d), turned};
     }
   };
-  decodeAll(crops, owner);
+  decodeAll(crops, owner, recognizer, false);
 
   // The direction classifier was sure, yet no lexicon entry fits: try the other direction.
   std::vector<cv::Mat> retry;
@@ -203,7 +209,26 @@ std::vector<std::optional<TextInstance>> readJobs(
     retry.push_back(crop);
     retry_owner.emplace_back(i, turned);
   }
-  if (!retry.empty()) decodeAll(retry, retry_owner);
+  if (!retry.empty()) decodeAll(retry, retry_owner, recognizer, false);
+
+  // What no lexicon entry fits, the fallback recognizer reads both ways round; only its
+  // lexicon matches count.
+  if (fallback_recognizer != nullptr) {
+    std::vector<cv::Mat> again;
+    std::vector<std::pair<size_t, bool>> again_owner;
+    for (size_t i = 0; i < jobs.size(); ++i) {
+      if (jobs[i].lexicon == nullptr || jobs[i].lexicon->empty() || best[i].decoding.matched)
+        continue;
+      again.push_back(upright[i]);
+      again_owner.emplace_back(i, false);
+      if (!jobs[i].try_both_directions) continue;
+      cv::Mat turned;
+      cv::rotate(upright[i], turned, cv::ROTATE_180);
+      again.push_back(turned);
+      again_owner.emplace_back(i, true);
+    }
+    if (!again.empty()) decodeAll(again, again_owner, *fallback_recognizer, true);
+  }
 
   std::vector<std::optional<TextInstance>> out(jobs.size());
   for (size_t i = 0; i < jobs.size(); ++i) {
@@ -285,7 +310,8 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     jobs.push_back(job);
   }
   auto read = readJobs(image, jobs, camera, options_, nets_->detector, nets_->recognizer,
-                       nets_->direction ? &*nets_->direction : nullptr, nets_->charset);
+                       nets_->direction ? &*nets_->direction : nullptr, nets_->charset,
+                       nets_->fallback_recognizer ? &*nets_->fallback_recognizer : nullptr);
   std::vector<TextInstance> out;
   for (auto& r : read)
     if (r) out.push_back(std::move(*r));

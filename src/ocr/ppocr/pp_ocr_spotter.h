@@ -48,6 +48,9 @@ struct PpOcrModelPaths {
   // PP-OCRv4's with its neck and head fine-tuned by parkloc on such bands.
   std::string band_detection;
   std::string recognition;
+  // A second recognizer for the crops whose reading matches no lexicon entry (full-frame
+  // spotting); only its lexicon matches are taken. Empty: none.
+  std::string fallback_recognition;
   std::string direction;  // empty: decide the direction by decoding both
   std::string dictionary;
   std::string classifier;  // empty: every instance is TextClass::kOther with score 0

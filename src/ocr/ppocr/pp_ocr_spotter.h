@@ -49,7 +49,10 @@ struct PpOcrModelPaths {
   std::string band_detection;
   std::string recognition;
   // A second recognizer for the crops whose reading matches no lexicon entry (full-frame
-  // spotting); only its lexicon matches are taken. Empty: none.
+  // spotting); only its lexicon matches are taken. Empty: none (the default: with parkloc's
+  // tuned recognizer it finds and reads more numbers, but some of its matches are wrong
+  // entries, and one sent a whole test drive's localization 16.7 m off; docs/OCR.md,
+  // session 8).
   std::string fallback_recognition;
   std::string direction;  // empty: decide the direction by decoding both
   std::string dictionary;

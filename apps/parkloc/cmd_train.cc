@@ -52,8 +52,7 @@ parkloc::ocr::TextClassifier trainAndScore(const TrainArgs& args, float ratio, b
   const auto held_out =
       ocr::collectClassifierSamples(eval::splitSequences(args.dataset, args.eval_split), options);
   for (const bool unread : {false, true})
-    if (options.text == ocr::SampleText::kBoth ||
-        (options.text == ocr::SampleText::kUnread) == unread)
+    if (ocr::givesSample(options.text, unread))
       printScore(fmt::format("ratio {} {}, {}", ratio, args.eval_split, unread ? "unread" : "read"),
                  ocr::scoreClassifier(classifier, held_out, unread));
   if (save) {

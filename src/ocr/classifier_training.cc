@@ -26,7 +26,7 @@ ClassifierSamples collectClassifierSamples(const std::vector<std::string>& seque
           const Quad quad = io::pointQuad(inst.polygon);
           if (quadHeight(quad) < 4.f || quadWidth(quad) < 4.f) continue;
           for (const bool unread : {false, true}) {
-            if (options.text == (unread ? SampleText::kRead : SampleText::kUnread)) continue;
+            if (!givesSample(options.text, unread)) continue;
             rows.push_back(
                 classifierFeatures(image, quad, unread ? "" : inst.text, options.features));
             out.labels.push_back(inst.cls);

@@ -21,6 +21,11 @@ struct ClassifierSamples {
 
 enum class SampleText { kRead, kUnread, kBoth };
 
+// Whether `text` gives the unread (true) or the read (false) sample of an instance.
+inline bool givesSample(SampleText text, bool unread) {
+  return text == SampleText::kBoth || (text == SampleText::kUnread) == unread;
+}
+
 struct SampleOptions {
   ClassifierFeatureOptions features;
   double max_occluded_fraction = 0.5;  // the targets' "less than half occluded"

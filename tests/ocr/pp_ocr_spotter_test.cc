@@ -57,6 +57,23 @@ TEST_F(PpOcrSpotterTest, ReadsARenderedLineUprightAndUpsideDown) {
   }
 }
 
+// Decoding both directions of every crop (no direction classifier) keeps the upright crop
+// upright while its turned copy is made.
+TEST(PpOcrSpotterDirections, DecodingBothWaysReadsUprightAndUpsideDownLines) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.direction = DirectionMode::kDecodeBoth;
+  PpOcrSpotter spotter(options);
+  const cv::Mat upright = testing::renderTextLine("B2-117", 40, 24);
+  cv::Mat turned;
+  cv::rotate(upright, turned, cv::ROTATE_180);
+  for (const cv::Mat& image : {upright, turned}) {
+    const auto found = spotter.spot(image, {});
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].text, "B2-117");
+  }
+}
+
 TEST_F(PpOcrSpotterTest, ReadsFloorTextThroughTheFisheyeAndMatchesTheLexicon) {
   const auto rig = geometry::defaultRig();
   const auto* left = rig.find("left");
@@ -131,30 +148,27 @@ TEST_F(PpOcrSpotterTest, RejectsEmptyAndWronglyTypedImages) {
   EXPECT_THROW(spotter_->spot(cv::Mat(32, 32, CV_32FC3, cv::Scalar::all(0)), {}), InputError);
 }
 
-TEST(PpOcrSpotterModels, MissingModelFileIsAnInputErrorNamingThePath) {
+// Loading `models` throws an InputError that names `path`.
+void expectInputErrorNaming(const PpOcrModelPaths& models, const std::string& path) {
   PpOcrOptions options;
-  options.models = PpOcrModelPaths::inDirectory("/nonexistent/models");
+  options.models = models;
   try {
     PpOcrSpotter spotter(options);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/models/ch_PP-OCRv4_det_infer.onnx"),
-              std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
 }
 
+TEST(PpOcrSpotterModels, MissingModelFileIsAnInputErrorNamingThePath) {
+  expectInputErrorNaming(PpOcrModelPaths::inDirectory("/nonexistent/models"),
+                         "/nonexistent/models/ch_PP-OCRv4_det_infer.onnx");
+}
+
 TEST(PpOcrSpotterModels, MissingFloorDetectorIsAnInputErrorNamingThePath) {
-  PpOcrOptions options;
-  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
-  options.models.floor_detection = "/nonexistent/parkloc_floor_det.onnx";
-  try {
-    PpOcrSpotter spotter(options);
-    FAIL() << "expected InputError";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/parkloc_floor_det.onnx"), std::string::npos)
-        << e.what();
-  }
+  auto models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  models.floor_detection = "/nonexistent/parkloc_floor_det.onnx";
+  expectInputErrorNaming(models, "/nonexistent/parkloc_floor_det.onnx");
 }
 
 // "B2-117" painted on the floor 2.6 m beside the left camera, upside down in its image, spotted
@@ -224,15 +238,7 @@ TEST(PpOcrSpotterModels, AFallbackRecognizerLeavesWhatTheFirstMatchedAsItWas) {
   EXPECT_LT(maxCornerError(spot.found[0].polygon, spot.truth), 2.0);
 
   models.fallback_recognition = "/nonexistent/fallback_rec.onnx";
-  PpOcrOptions options;
-  options.models = models;
-  try {
-    PpOcrSpotter spotter(options);
-    FAIL() << "expected InputError";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/fallback_rec.onnx"), std::string::npos)
-        << e.what();
-  }
+  expectInputErrorNaming(models, "/nonexistent/fallback_rec.onnx");
 }
 
 TEST(PpOcrSpotterModels, TheTunedRecognizerReadsFloorTextThroughTheFisheye) {

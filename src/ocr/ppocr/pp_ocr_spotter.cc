@@ -72,14 +72,30 @@ struct ReadJob {
   bool keep_unread = false;
 };
 
+// Crops for one recognizer call, each with its job and whether it was turned by 180 degrees.
+struct CropBatch {
+  std::vector<cv::Mat> crops;
+  std::vector<std::pair<size_t, bool>> owner;  // job, turned
+
+  void add(const cv::Mat& upright, size_t job, bool turned) {
+    cv::Mat crop;  // a new image when turned: `upright` may be queued too
+    if (turned)
+      cv::rotate(upright, crop, cv::ROTATE_180);
+    else
+      crop = upright;
+    crops.push_back(crop);
+    owner.emplace_back(job, turned);
+  }
+};
+
 }  // namespace
 
 PpOcrSpotter::PpOcrSpotter(const PpOcrOptions& options) : options_(options) {
   const auto& m = options.models;
-  nets_ = std::unique_ptr<Networks>(
-      new Networks{DbDetector(m.detection, options.onnx), std::nullopt, std::nullopt,
-                   CtcRecognizer(m.recognition, options.onnx), std::nullopt,
-                   Charset::fromDictionaryFile(m.dictionary), TextClassifier(), TextClassifier()});
+  nets_ = std::unique_ptr<Networks>(new Networks{
+      DbDetector(m.detection, options.onnx), std::nullopt, std::nullopt,
+      CtcRecognizer(m.recognition, options.onnx), std::nullopt,
+      Charset::fromDictionaryFile(m.dictionary), TextClassifier(), TextClassifier(), std::nullopt});
   freeReadingClasses(options.reading_alphabet, {}, nets_->charset);  // a foreign character throws
   if (!m.floor_detection.empty()) nets_->floor_detector.emplace(m.floor_detection, options.onnx);
   if (!m.band_detection.empty()) {
@@ -146,19 +162,10 @@ std::vector<std::optional<TextInstance>> readJobs(
       if (jobs[i].try_both_directions) directions[i] = 3;
   }
 
-  std::vector<cv::Mat> crops;
-  std::vector<std::pair<size_t, bool>> owner;  // job, turned
+  CropBatch first;
   for (size_t i = 0; i < jobs.size(); ++i) {
-    if (directions[i] & 1) {
-      crops.push_back(upright[i]);
-      owner.emplace_back(i, false);
-    }
-    if (directions[i] & 2) {
-      cv::Mat turned;
-      cv::rotate(upright[i], turned, cv::ROTATE_180);
-      crops.push_back(turned);
-      owner.emplace_back(i, true);
-    }
+    if (directions[i] & 1) first.add(upright[i], i, false);
+    if (directions[i] & 2) first.add(upright[i], i, true);
   }
   static const std::vector<std::string> kNoLexicon;
   struct Best {
@@ -177,57 +184,45 @@ std::vector<std::optional<TextInstance>> readJobs(
                             freeReadingClasses(options.reading_alphabet, *lexicon, charset));
     return classes_of.back().second;
   };
-  auto decodeAll = [&](const std::vector<cv::Mat>& batch,
-                       const std::vector<std::pair<size_t, bool>>& from,
-                       const CtcRecognizer& reader, bool matches_only) {
-    const auto outputs = reader.recognize(batch, options.recognition_batch);
+  auto decodeAll = [&](const CropBatch& batch, const CtcRecognizer& reader, bool matches_only) {
+    if (batch.crops.empty()) return;
+    const auto outputs = reader.recognize(batch.crops, options.recognition_batch);
     for (size_t k = 0; k < outputs.size(); ++k) {
-      const auto [job, turned] = from[k];
+      const auto [job, turned] = batch.owner[k];
       const auto& lexicon = jobs[job].lexicon ? *jobs[job].lexicon : kNoLexicon;
       LexiconDecoding d = decodeWithLexicon(outputs[k].matrix(), charset, lexicon, options.lexicon,
                                             readingClasses(jobs[job].lexicon));
+      if (matches_only && !d.matched) continue;
       // Both directions share the crop's step count, so their log probabilities compare;
       // a lexicon match beats a free reading.
       const double score = (d.matched ? 1e6 : 0.0) +
                            (d.matched ? std::max(d.best_log_prob, d.raw_log_prob) : d.raw_log_prob);
-      if (matches_only && !d.matched) continue;
       if (score > best[job].score) best[job] = {score, std::move(d), turned};
     }
   };
-  decodeAll(crops, owner, recognizer, false);
+  decodeAll(first, recognizer, false);
+  // A job with a lexicon that none of its readings so far matches.
+  auto unmatched = [&](size_t i) {
+    return jobs[i].lexicon != nullptr && !jobs[i].lexicon->empty() && !best[i].decoding.matched;
+  };
 
   // The direction classifier was sure, yet no lexicon entry fits: try the other direction.
-  std::vector<cv::Mat> retry;
-  std::vector<std::pair<size_t, bool>> retry_owner;
-  for (size_t i = 0; i < jobs.size(); ++i) {
-    if (directions[i] == 3 || !jobs[i].try_both_directions || jobs[i].lexicon == nullptr ||
-        jobs[i].lexicon->empty() || best[i].decoding.matched)
-      continue;
-    const bool turned = directions[i] == 1;
-    cv::Mat crop = upright[i];
-    if (turned) cv::rotate(upright[i], crop, cv::ROTATE_180);
-    retry.push_back(crop);
-    retry_owner.emplace_back(i, turned);
-  }
-  if (!retry.empty()) decodeAll(retry, retry_owner, recognizer, false);
+  CropBatch retry;
+  for (size_t i = 0; i < jobs.size(); ++i)
+    if (directions[i] != 3 && jobs[i].try_both_directions && unmatched(i))
+      retry.add(upright[i], i, directions[i] == 1);
+  decodeAll(retry, recognizer, false);
 
   // What no lexicon entry fits, the fallback recognizer reads both ways round; only its
   // lexicon matches count.
   if (fallback_recognizer != nullptr) {
-    std::vector<cv::Mat> again;
-    std::vector<std::pair<size_t, bool>> again_owner;
+    CropBatch again;
     for (size_t i = 0; i < jobs.size(); ++i) {
-      if (jobs[i].lexicon == nullptr || jobs[i].lexicon->empty() || best[i].decoding.matched)
-        continue;
-      again.push_back(upright[i]);
-      again_owner.emplace_back(i, false);
-      if (!jobs[i].try_both_directions) continue;
-      cv::Mat turned;
-      cv::rotate(upright[i], turned, cv::ROTATE_180);
-      again.push_back(turned);
-      again_owner.emplace_back(i, true);
+      if (!unmatched(i)) continue;
+      again.add(upright[i], i, false);
+      if (jobs[i].try_both_directions) again.add(upright[i], i, true);
     }
-    if (!again.empty()) decodeAll(again, again_owner, *fallback_recognizer, true);
+    decodeAll(again, *fallback_recognizer, true);
   }
 
   std::vector<std::optional<TextInstance>> out(jobs.size());

@@ -100,6 +100,28 @@ void BM_SpotFullFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_SpotFullFrame)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// What `parkloc ocr --camera` runs by default: the fine-tuned floor detector and both class
+// heads (read and unread) on top of PaddleOCR's recognizer.
+void BM_SpotFullFrameShipped(benchmark::State& state) {
+  static const auto shipped = [] {
+    ocr::PpOcrOptions options;
+    options.models = ocr::PpOcrModelPaths::inDirectory(kModels);
+    options.models.floor_detection = ocr::floorDetectorIn(kModels);
+    options.models.classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
+    options.models.unread_classifier =
+        std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier_unread.yml";
+    return std::make_unique<ocr::PpOcrSpotter>(options);
+  }();
+  const auto rig = geometry::defaultRig();
+  ocr::SpotRequest request;
+  request.camera = rig.find("left");
+  request.lexicon = {"B2-117", "B2-118", "B2-119"};
+  size_t found = 0;
+  for (auto _ : state) found = shipped->spot(frame().image, request).size();
+  state.SetLabel("ground, tuned floor detector, class heads, found " + std::to_string(found));
+}
+BENCHMARK(BM_SpotFullFrameShipped)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 void BM_SpotRegions(benchmark::State& state) {
   const auto rig = geometry::defaultRig();
   ocr::SpotRequest request;

@@ -10,10 +10,30 @@
 namespace parkloc::ocr {
 namespace {
 
-// One process-wide environment: ONNX Runtime allows a single Ort::Env per process.
-Ort::Env& environment() {
-  static Ort::Env env(ORT_LOGGING_LEVEL_ERROR, "parkloc");
-  return env;
+// One process-wide environment (ONNX Runtime allows a single Ort::Env per process), with
+// the shared thread pool sized by the first model loaded.
+struct Environment {
+  OnnxOptions pool;
+  Ort::Env env;
+
+  explicit Environment(const OnnxOptions& first)
+      : pool(first), env(threading(first), ORT_LOGGING_LEVEL_ERROR, "parkloc") {}
+
+  static Ort::ThreadingOptions threading(const OnnxOptions& options) {
+    Ort::ThreadingOptions threading;
+    threading.SetGlobalIntraOpNumThreads(options.intra_op_threads);
+    threading.SetGlobalInterOpNumThreads(options.inter_op_threads);
+    return threading;
+  }
+  bool shares(const OnnxOptions& options) const {
+    return options.intra_op_threads == pool.intra_op_threads &&
+           options.inter_op_threads == pool.inter_op_threads;
+  }
+};
+
+Environment& environment(const OnnxOptions& first) {
+  static Environment environment(first);
+  return environment;
 }
 
 }  // namespace
@@ -28,11 +48,17 @@ OnnxModel::OnnxModel(const std::string& path, const OnnxOptions& options)
     : path_(path), impl_(std::make_unique<Impl>()) {
   if (!std::filesystem::is_regular_file(path)) throw IoError("model file not found: " + path);
   try {
+    Environment& environment = ocr::environment(options);
     Ort::SessionOptions session_options;
-    session_options.SetIntraOpNumThreads(options.intra_op_threads);
-    session_options.SetInterOpNumThreads(options.inter_op_threads);
+    if (environment.shares(options)) {
+      session_options.DisablePerSessionThreads();
+    } else {
+      session_options.SetIntraOpNumThreads(options.intra_op_threads);
+      session_options.SetInterOpNumThreads(options.inter_op_threads);
+      session_options.AddConfigEntry("session.intra_op.allow_spinning", "0");
+    }
     session_options.SetGraphOptimizationLevel(GraphOptimizationLevel::ORT_ENABLE_ALL);
-    impl_->session = std::make_unique<Ort::Session>(environment(), path.c_str(), session_options);
+    impl_->session = std::make_unique<Ort::Session>(environment.env, path.c_str(), session_options);
     Ort::AllocatorWithDefaultOptions allocator;
     impl_->input_name = impl_->session->GetInputNameAllocated(0, allocator).get();
     impl_->output_name = impl_->session->GetOutputNameAllocated(0, allocator).get();

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "apps/parkloc/command.h"
 #include "eval/evaluation.h"
@@ -46,6 +47,8 @@ struct SpotterArgs {
   float floor_binary_threshold = ocr::PpOcrOptions{}.floor_db.binary_threshold;
   std::string reading_alphabet = ocr::PpOcrOptions{}.reading_alphabet;
   float min_text_confidence = ocr::PpOcrOptions{}.min_text_confidence;
+  std::vector<float> floor_read_expand = {ocr::PpOcrOptions{}.floor_read_expand_x,
+                                          ocr::PpOcrOptions{}.floor_read_expand_y};
 
   void addTo(CLI::App* cmd) {
     cmd->add_option("--models", models, "Folder with the PP-OCRv4 ONNX models")
@@ -103,6 +106,12 @@ struct SpotterArgs {
                     "reading is at least this confident")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
+    cmd->add_option("--floor-read-expand", floor_read_expand,
+                    "Floor detector: its boxes are read from a crop grown by these factors "
+                    "(along, across the text)")
+        ->expected(2)
+        ->check(CLI::Range(1.0, 3.0))
+        ->capture_default_str();
     cmd->add_option("--floor-view-resolution", floor_view.resolution,
                     "Floor view: metres per pixel")
         ->check(CLI::Range(0.005, 0.1))
@@ -125,6 +134,8 @@ inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   options.floor_db.binary_threshold = args.floor_binary_threshold;
   options.reading_alphabet = args.reading_alphabet;
   options.min_text_confidence = args.min_text_confidence;
+  options.floor_read_expand_x = args.floor_read_expand.at(0);
+  options.floor_read_expand_y = args.floor_read_expand.at(1);
   if (!args.classifier.empty() && std::filesystem::exists(args.classifier)) {
     options.models.classifier = args.classifier;
   }

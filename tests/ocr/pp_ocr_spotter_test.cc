@@ -177,8 +177,7 @@ struct LeftFloorSpot {
   std::vector<TextInstance> found;
   Quad truth;
 };
-LeftFloorSpot spotOnTheLeftFloor(const PpOcrModelPaths& models) {
-  PpOcrOptions options;
+LeftFloorSpot spotOnTheLeftFloor(const PpOcrModelPaths& models, PpOcrOptions options = {}) {
   options.models = models;
   PpOcrSpotter spotter(options);
   const auto rig = geometry::defaultRig();
@@ -198,6 +197,24 @@ TEST(PpOcrSpotterModels, TheTunedFloorDetectorReadsFloorTextThroughTheFisheye) {
   EXPECT_EQ(spot.found[0].text, "B2-117");
   EXPECT_TRUE(spot.found[0].lexicon_match);
   EXPECT_LT(maxCornerError(spot.found[0].polygon, spot.truth), 2.0);
+}
+
+// The floor detector's box is read from a crop with a margin, and reported as detected.
+TEST(PpOcrSpotterModels, TheFloorDetectorsBoxIsReadWithAMarginAndReportedAsDetected) {
+  auto models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  models.floor_detection = floorDetectorIn(PARKLOC_MODEL_DIR);
+  PpOcrOptions options;
+  options.refine_corners = false;  // the reported polygon is the detected box itself
+  ASSERT_GT(options.floor_read_expand_x, 1.f);
+  ASSERT_GT(options.floor_read_expand_y, 1.f);
+  const auto with_margin = spotOnTheLeftFloor(models, options);
+  options.floor_read_expand_x = options.floor_read_expand_y = 1.f;
+  const auto without = spotOnTheLeftFloor(models, options);
+  ASSERT_EQ(with_margin.found.size(), 1u);
+  ASSERT_EQ(without.found.size(), 1u);
+  EXPECT_EQ(with_margin.found[0].text, "B2-117");
+  EXPECT_TRUE(with_margin.found[0].lexicon_match);
+  EXPECT_LT(maxCornerError(with_margin.found[0].polygon, without.found[0].polygon), 0.01);
 }
 
 // No reading is sure enough here (min_text_confidence above 1): the floor detector's box,

@@ -69,7 +69,7 @@ std::vector<RecognitionOutput> CtcRecognizer::recognize(const std::vector<cv::Ma
   batch_size = std::max(batch_size, 1);
   for (size_t begin = 0; begin < order.size(); begin += batch_size) {
     const size_t end = std::min(order.size(), begin + batch_size);
-    int width = 0;
+    int width = kInputWidth;
     for (size_t k = begin; k < end; ++k) width = std::max(width, crops[order[k]].cols);
     width = (width + 7) / 8 * 8;
     Tensor input;

@@ -36,8 +36,14 @@ class CtcRecognizer {
   // crops are padded, wider ones squeezed.
   static constexpr int kMinWidth = 16;
   static constexpr int kMaxWidth = 480;
+  // Every input is at least this wide, the crops padded on the right, as PaddleOCR feeds its
+  // recognizer (rec_image_shape 3,48,320): it was trained on text at the left of such inputs
+  // and misreads a short crop fed at its own width (parking numbers of the test split read
+  // from their exact boxes: 21.8 % at their own width, 39.1 % padded; docs/OCR.md).
+  static constexpr int kInputWidth = 320;
   CtcRecognizer(const std::string& model_path, const OnnxOptions& options);
-  // Crops are 8-bit BGR, kHeight rows tall; batched by similar width, padded on the right.
+  // Crops are 8-bit BGR, kHeight rows tall; batched by similar width, padded on the right to
+  // the batch's widest and at least kInputWidth.
   std::vector<RecognitionOutput> recognize(const std::vector<cv::Mat>& crops, int batch_size) const;
 
  private:

@@ -70,6 +70,8 @@ struct ReadJob {
   // The detector is sure of this box: it is reported even when its reading is not
   // (text empty, raw_text the greedy reading).
   bool keep_unread = false;
+  // The crop is read from the quad grown by these factors (along, across the text).
+  float read_expand_x = 1.f, read_expand_y = 1.f;
 };
 
 // Crops for one recognizer call, each with its job and whether it was turned by 180 degrees.
@@ -138,8 +140,9 @@ std::vector<std::optional<TextInstance>> readJobs(
     const CtcRecognizer* fallback_recognizer = nullptr) {
   std::vector<cv::Mat> upright(jobs.size());
   for (size_t i = 0; i < jobs.size(); ++i)
-    upright[i] = rectifiedCrop(image, jobs[i].quad, CtcRecognizer::kHeight,
-                               CtcRecognizer::kMinWidth, options.recognition_max_width);
+    upright[i] = rectifiedCrop(
+        image, expandQuad(jobs[i].quad, jobs[i].read_expand_x, jobs[i].read_expand_y),
+        CtcRecognizer::kHeight, CtcRecognizer::kMinWidth, options.recognition_max_width);
 
   // Which directions to decode, per job: bit 0 upright, bit 1 turned.
   std::vector<int> directions(jobs.size(), 1);
@@ -302,6 +305,10 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     job.detection_score = box.score;
     job.lexicon = &request.lexicon;
     job.keep_unread = role == DetectorRole::kFloorView && box.score >= options_.confident_box_score;
+    if (db == &options_.floor_db) {
+      job.read_expand_x = options_.floor_read_expand_x;
+      job.read_expand_y = options_.floor_read_expand_y;
+    }
     jobs.push_back(job);
   }
   auto read = readJobs(image, jobs, camera, options_, nets_->detector, nets_->recognizer,

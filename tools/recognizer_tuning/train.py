@@ -38,6 +38,10 @@ CLASSIFIER = ["linear_85.w_0", "linear_85.b_0"]  # MatMul weight (120, C) and bi
 BLANK = 0
 HEIGHT = 48
 STEP = 8  # input pixels per CTC time step
+# The C++ feeds every crop padded to at least this width (CtcRecognizer::kInputWidth, as
+# PaddleOCR does since session 9); the committed models/recognizer_tuning.npz was trained
+# before, on crops padded only to their batch's width.
+INPUT_WIDTH = 320
 
 
 # ----- data -------------------------------------------------------------------------------
@@ -88,7 +92,7 @@ def normalise(bgr, width):
 
 
 def padded_width(width, extra=0):
-    return (width + extra + STEP - 1) // STEP * STEP
+    return max(INPUT_WIDTH, (width + extra + STEP - 1) // STEP * STEP)
 
 
 # ----- features: the frozen stock graph up to FEATURES, once per crop -----------------------
@@ -278,8 +282,8 @@ def main():
     ap.add_argument("--pull", type=float, default=1e-3,
                     help="weight of the L2 distance to the stock tensors in the loss")
     ap.add_argument("--extra-pad", type=int, default=16,
-                    help="train crops get 0..this many px of extra right padding, as the C++ "
-                         "batches of similar width give them")
+                    help="train crops get 0..this many px of extra right padding (beyond "
+                         "INPUT_WIDTH only), as the C++ batches of similar width give them")
     ap.add_argument("--extract-batch", type=int, default=32)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--threads", type=int, default=1,

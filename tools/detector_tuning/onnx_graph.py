@@ -2,7 +2,7 @@
 so that they can be fine-tuned.
 
     from onnx_graph import OnnxGraph
-    net = OnnxGraph("third_party/models/ch_PP-OCRv4_rec_infer.onnx")
+    net = OnnxGraph("third_party/models/paddleocr/ch_PP-OCRv4_rec_infer.onnx")
     features = net(x, stop="p2o.Concat.8")          # the graph input up to a node output
     probs = net(features, start="p2o.Concat.8")     # from that node output to the graph output
 

@@ -1,6 +1,6 @@
 """Fine-tunes PP-OCRv4's DB detector on floor views written by `parkloc train detector-data`.
 
-    python3 tools/detector_tuning/train.py --base third_party/models/ch_PP-OCRv4_det_infer.onnx \
+    python3 tools/detector_tuning/train.py --base third_party/models/paddleocr/ch_PP-OCRv4_det_infer.onnx \
         --train DATA_TRAIN --val DATA_VAL --out models/detector_ground_tuning.npz
 
 Only the layers from --train-from on (by default the FPN neck and the DB head) learn; the

@@ -3,7 +3,7 @@
 BGR crops; the class column is not used here).
 
     /usr/bin/python3 tools/recognizer_tuning/train.py \
-        --base third_party/models/ch_PP-OCRv4_rec_infer.onnx \
+        --base third_party/models/paddleocr/ch_PP-OCRv4_rec_infer.onnx \
         --dict third_party/models/ppocr_keys_v1.txt \
         --train /work/data/rec_train --val /work/data/rec_val --out models/recognizer_tuning.npz
 

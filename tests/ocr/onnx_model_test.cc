@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "common/error.h"
@@ -37,6 +39,33 @@ TEST(OnnxModel, TwoModelsOnTheSharedPoolKeepTheirResults) {
   const Tensor a1 = first.run(small), b = second.run(large), a2 = first.run(small);
   EXPECT_EQ(b.shape, (std::vector<int64_t>{1, 1, 64, 128}));
   EXPECT_EQ(a1.data, a2.data);
+}
+
+// The set-up rewrites PaddleOCR's models into the same function with fewer element-wise
+// passes (tools/model_folding/fold_affine.py): what parkloc loads must compute what the models
+// as shipped (third_party/models/paddleocr) do.
+void expectTheShippedFunction(const std::string& file, int height, int width) {
+  const std::string dir = PARKLOC_MODEL_DIR;
+  const OnnxModel shipped(dir + "/paddleocr/" + file), folded(dir + "/" + file);
+  const Tensor input = randomImage(height, width);
+  const Tensor a = shipped.run(input), b = folded.run(input);
+  ASSERT_EQ(a.shape, b.shape) << file;
+  float worst = 0.f;
+  for (size_t i = 0; i < a.data.size(); ++i)
+    worst = std::max(worst, std::abs(a.data[i] - b.data[i]));
+  EXPECT_LT(worst, 1e-4f) << file;
+}
+
+TEST(FoldedModels, TheDetectorComputesWhatPaddleOcrsDoes) {
+  expectTheShippedFunction("ch_PP-OCRv4_det_infer.onnx", 96, 128);
+}
+
+TEST(FoldedModels, TheRecognizerComputesWhatPaddleOcrsDoes) {
+  expectTheShippedFunction("ch_PP-OCRv4_rec_infer.onnx", 48, 320);
+}
+
+TEST(FoldedModels, TheDirectionClassifierComputesWhatPaddleOcrsDoes) {
+  expectTheShippedFunction("ch_ppocr_mobile_v2.0_cls_infer.onnx", 48, 192);
 }
 
 TEST(OnnxModel, AMissingFileIsAnErrorNamingThePath) {

@@ -103,6 +103,10 @@ class FoldAffineTest(unittest.TestCase):
     def tearDown(self):
         self.dir.cleanup()
 
+    def assert_same_function(self, tolerance):
+        np.testing.assert_allclose(evaluate(self.out, self.x), evaluate(self.base, self.x),
+                                   rtol=tolerance, atol=tolerance)
+
     def fold(self):
         result = subprocess.run([sys.executable, SCRIPT, self.base, self.out],
                                 capture_output=True, text=True)
@@ -117,8 +121,7 @@ class FoldAffineTest(unittest.TestCase):
         b.save(self.base, y, 3)
         ops = self.fold()
         self.assertEqual(ops, ["Conv", "HardSigmoid", "Mul", "Conv"])
-        np.testing.assert_allclose(evaluate(self.out, self.x), evaluate(self.base, self.x),
-                                   rtol=1e-5, atol=1e-5)
+        self.assert_same_function(1e-5)
 
     def test_an_affine_block_before_a_padded_convolution_stays(self):
         b = Builder()
@@ -127,8 +130,7 @@ class FoldAffineTest(unittest.TestCase):
         b.save(self.base, y, 2)
         ops = self.fold()
         self.assertEqual(ops, ["Clip", "Mul", "Add", "Conv"])
-        np.testing.assert_allclose(evaluate(self.out, self.x), evaluate(self.base, self.x),
-                                   rtol=1e-6, atol=1e-6)
+        self.assert_same_function(1e-6)
 
     def test_a_value_read_twice_is_not_folded_into_one_reader(self):
         b = Builder()
@@ -137,8 +139,7 @@ class FoldAffineTest(unittest.TestCase):
         b.save(self.base, y, 2)
         ops = self.fold()
         self.assertEqual(ops, ["Conv", "Mul", "Add", "Add"])
-        np.testing.assert_allclose(evaluate(self.out, self.x), evaluate(self.base, self.x),
-                                   rtol=1e-6, atol=1e-6)
+        self.assert_same_function(1e-6)
 
 
 if __name__ == "__main__":

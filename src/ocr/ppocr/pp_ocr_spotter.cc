@@ -275,9 +275,12 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     cv::resize(image, resized, {w, h}, 0, 0, cv::INTER_AREA);
   const DbDetector* detector = &nets_->detector;
   const DbOptions* db = &options_.db;
+  float read_expand_x = 1.f, read_expand_y = 1.f;  // the tuned floor detector's boxes only
   if (role == DetectorRole::kFloorView && nets_->floor_detector) {
     detector = &*nets_->floor_detector;
     db = &options_.floor_db;
+    read_expand_x = options_.floor_read_expand_x;
+    read_expand_y = options_.floor_read_expand_y;
   } else if (role == DetectorRole::kRawBand && nets_->band_detector) {
     detector = &*nets_->band_detector;
     db = &options_.band_db;
@@ -305,10 +308,8 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     job.detection_score = box.score;
     job.lexicon = &request.lexicon;
     job.keep_unread = role == DetectorRole::kFloorView && box.score >= options_.confident_box_score;
-    if (db == &options_.floor_db) {
-      job.read_expand_x = options_.floor_read_expand_x;
-      job.read_expand_y = options_.floor_read_expand_y;
-    }
+    job.read_expand_x = read_expand_x;
+    job.read_expand_y = read_expand_y;
     jobs.push_back(job);
   }
   auto read = readJobs(image, jobs, camera, options_, nets_->detector, nets_->recognizer,

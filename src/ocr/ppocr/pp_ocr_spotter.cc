@@ -135,7 +135,7 @@ Quad refinedCorners(const cv::Mat& image, const Quad& quad, const PpOcrOptions& 
 // doubt) go through the recognizer in batches; each job keeps its better direction.
 std::vector<std::optional<TextInstance>> readJobs(
     const cv::Mat& image, const std::vector<ReadJob>& jobs, const geometry::RigCamera* camera,
-    const PpOcrOptions& options, const DbDetector&, const CtcRecognizer& recognizer,
+    const PpOcrOptions& options, const CtcRecognizer& recognizer,
     const DirectionClassifier* direction, const Charset& charset,
     const CtcRecognizer* fallback_recognizer = nullptr) {
   std::vector<cv::Mat> upright(jobs.size());
@@ -312,7 +312,7 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     job.read_expand_y = read_expand_y;
     jobs.push_back(job);
   }
-  auto read = readJobs(image, jobs, camera, options_, nets_->detector, nets_->recognizer,
+  auto read = readJobs(image, jobs, camera, options_, nets_->recognizer,
                        nets_->direction ? &*nets_->direction : nullptr, nets_->charset,
                        nets_->fallback_recognizer ? &*nets_->fallback_recognizer : nullptr);
   std::vector<TextInstance> out;
@@ -481,7 +481,7 @@ std::vector<TextInstance> PpOcrSpotter::readRegions(const cv::Mat& image,
       jobs[patch_region[k]].detection_score = chosen->score;
     }
   }
-  auto read = readJobs(image, jobs, request.camera, options_, nets_->detector, nets_->recognizer,
+  auto read = readJobs(image, jobs, request.camera, options_, nets_->recognizer,
                        nets_->direction ? &*nets_->direction : nullptr, nets_->charset);
   std::vector<TextInstance> out;
   for (size_t r = 0; r < read.size(); ++r) {

@@ -107,6 +107,24 @@ def rename_input(g, old, new):
                 node.input[k] = new
 
 
+def conv_weights(g, conv):
+    """The convolution's constant weights and bias (zeros when it has none), or None."""
+    w = g.value(conv.input[1])
+    if w is None:
+        return None
+    bias = g.value(conv.input[2]) if len(conv.input) > 2 else np.zeros(w.shape[0], np.float32)
+    return None if bias is None else (w, bias)
+
+
+def set_conv_weights(g, conv, w, bias):
+    conv.input[1] = g.set_value(conv.input[1], w)
+    name = g.set_value(conv.input[2] if len(conv.input) > 2 else conv.output[0] + "_b", bias)
+    if len(conv.input) > 2:
+        conv.input[2] = name
+    else:
+        conv.input.append(name)
+
+
 def fold_into_preceding_convs(g):
     count = 0
     # Nodes are looked up again after every rewrite: removing rebuilds the node list, and a
@@ -114,20 +132,12 @@ def fold_into_preceding_convs(g):
     for name in [n.output[0] for n in g.graph.node if n.op_type == "Conv"]:
         conv = g.producer(name)
         found = scalar_affine_after(g, name)
-        if found is None or g.value(conv.input[1]) is None:
+        weights = conv_weights(g, conv)
+        if found is None or weights is None:
             continue
         nodes, scale, shift = found
-        w = g.value(conv.input[1])
-        bias = g.value(conv.input[2]) if len(conv.input) > 2 else np.zeros(w.shape[0], np.float32)
-        if bias is None:
-            continue
-        conv.input[1] = g.set_value(conv.input[1], w * scale)
-        new_bias = g.set_value(conv.input[2] if len(conv.input) > 2 else conv.output[0] + "_b",
-                               bias * scale + shift)
-        if len(conv.input) > 2:
-            conv.input[2] = new_bias
-        else:
-            conv.input.append(new_bias)
+        w, bias = weights
+        set_conv_weights(g, conv, w * scale, bias * scale + shift)
         rename_input(g, nodes[-1].output[0], conv.output[0])
         g.remove(nodes)
         count += 1
@@ -182,8 +192,7 @@ def unpadded(conv):
 def foldable_conv(g, conv, source):
     """A convolution reading `source` as its data, with constant weights and bias, unpadded."""
     return conv is not None and conv.op_type == "Conv" and conv.input[0] == source and \
-        unpadded(conv) and g.value(conv.input[1]) is not None and \
-        (len(conv.input) < 3 or g.value(conv.input[2]) is not None)
+        unpadded(conv) and conv_weights(g, conv) is not None
 
 
 def fold_into_following_convs(g):
@@ -202,15 +211,9 @@ def fold_into_following_convs(g):
         if not users or not all(foldable_conv(g, u, out) for u in users):
             continue
         for conv in users:
-            w = g.value(conv.input[1])
-            bias = g.value(conv.input[2]) if len(conv.input) > 2 else np.zeros(w.shape[0])
-            conv.input[1] = g.set_value(conv.input[1], w * scale)
-            new_bias = g.set_value(conv.input[2] if len(conv.input) > 2 else conv.output[0] + "_b",
-                                   bias + shift * w.reshape(w.shape[0], -1).sum(axis=1))
-            if len(conv.input) > 2:
-                conv.input[2] = new_bias
-            else:
-                conv.input.append(new_bias)
+            w, bias = conv_weights(g, conv)
+            set_conv_weights(g, conv, w * scale,
+                             bias + shift * w.reshape(w.shape[0], -1).sum(axis=1))
             conv.input[0] = x
         g.remove(nodes)
         count += 1

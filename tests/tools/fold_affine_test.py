@@ -103,43 +103,35 @@ class FoldAffineTest(unittest.TestCase):
     def tearDown(self):
         self.dir.cleanup()
 
-    def assert_same_function(self, tolerance):
-        np.testing.assert_allclose(evaluate(self.out, self.x), evaluate(self.base, self.x),
-                                   rtol=tolerance, atol=tolerance)
-
-    def fold(self):
+    def assert_folds_to(self, builder, out, channels, ops, tolerance):
+        """Saves the model, folds it: these nodes remain, and the function is the same."""
+        builder.save(self.base, out, channels)
         result = subprocess.run([sys.executable, SCRIPT, self.base, self.out],
                                 capture_output=True, text=True)
         self.assertEqual(result.returncode, 0, result.stderr)
-        return [n.op_type for n in onnx.load(self.out).graph.node if n.op_type != "Constant"]
+        folded = [n.op_type for n in onnx.load(self.out).graph.node if n.op_type != "Constant"]
+        self.assertEqual(folded, ops)
+        np.testing.assert_allclose(evaluate(self.out, self.x), evaluate(self.base, self.x),
+                                   rtol=tolerance, atol=tolerance)
 
     def test_a_block_of_pp_lcnet_v3_keeps_its_function_with_fewer_nodes(self):
         b = Builder()
         # conv, affine, hard-swish, affine, then a 1x1 convolution: all of it folds.
         h = b.hard_swish(b.affine(b.conv("x", 2, 4, 3, 1), 0.9, 0.5))
         y = b.conv(b.affine(h, 0.5, -0.2), 4, 3, 1, 0)
-        b.save(self.base, y, 3)
-        ops = self.fold()
-        self.assertEqual(ops, ["Conv", "HardSigmoid", "Mul", "Conv"])
-        self.assert_same_function(1e-5)
+        self.assert_folds_to(b, y, 3, ["Conv", "HardSigmoid", "Mul", "Conv"], 1e-5)
 
     def test_an_affine_block_before_a_padded_convolution_stays(self):
         b = Builder()
         y = b.conv(b.affine(b.op("Clip", ["x", b.const(-1.0), b.const(1.0)]), 2.0, 0.7),
                    2, 2, 3, 1, group=2)
-        b.save(self.base, y, 2)
-        ops = self.fold()
-        self.assertEqual(ops, ["Clip", "Mul", "Add", "Conv"])
-        self.assert_same_function(1e-6)
+        self.assert_folds_to(b, y, 2, ["Clip", "Mul", "Add", "Conv"], 1e-6)
 
     def test_a_value_read_twice_is_not_folded_into_one_reader(self):
         b = Builder()
         c = b.conv("x", 2, 2, 1, 0)
         y = b.op("Add", [b.affine(c, 1.5, 0.25), c])  # the conv output is read twice
-        b.save(self.base, y, 2)
-        ops = self.fold()
-        self.assertEqual(ops, ["Conv", "Mul", "Add", "Add"])
-        self.assert_same_function(1e-6)
+        self.assert_folds_to(b, y, 2, ["Conv", "Mul", "Add", "Add"], 1e-6)
 
 
 if __name__ == "__main__":

@@ -133,6 +133,14 @@ class FoldAffineTest(unittest.TestCase):
         y = b.op("Add", [b.affine(c, 1.5, 0.25), c])  # the conv output is read twice
         self.assert_folds_to(b, y, 2, ["Conv", "Mul", "Add", "Add"], 1e-6)
 
+    def test_a_missing_model_is_one_line_naming_it(self):
+        missing = os.path.join(self.dir.name, "missing.onnx")
+        result = subprocess.run([sys.executable, SCRIPT, missing, self.out],
+                                capture_output=True, text=True)
+        self.assertNotEqual(result.returncode, 0)
+        self.assertEqual(len(result.stderr.strip().splitlines()), 1, result.stderr)
+        self.assertIn(missing, result.stderr)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -222,8 +222,11 @@ def fold_into_following_convs(g):
 
 def main():
     if len(sys.argv) != 3:
-        raise SystemExit(__doc__)
-    model = onnx.load(sys.argv[1])
+        raise SystemExit("usage: fold_affine.py IN.onnx OUT.onnx")
+    try:
+        model = onnx.load(sys.argv[1])
+    except Exception as e:  # missing, unreadable or not an ONNX model
+        raise SystemExit(f"fold_affine: cannot read {sys.argv[1]}: {e}")
     g = Graph(model)
     counts = (fold_into_preceding_convs(g), replace_hard_swish(g), fold_into_following_convs(g))
     g.drop_unused_constants()

@@ -39,6 +39,7 @@ std::string frameResultToJson(const FrameResult& r) {
       instances.push_back({{"text", t.text},
                            {"raw_text", t.raw_text},
                            {"lexicon_match", t.lexicon_match},
+                           {"second_opinion", t.second_opinion},
                            {"class", map::toString(t.cls)},
                            {"polygon", polygon},
                            {"detection_score", t.detection_score},

@@ -122,6 +122,8 @@ std::string toString(AssociationVerdict verdict) {
       return "no_geometry";
     case AssociationVerdict::kAmbiguous:
       return "ambiguous";
+    case AssociationVerdict::kUnconfirmed:
+      return "unconfirmed";
   }
   return "unknown";
 }
@@ -564,9 +566,7 @@ void Pipeline::Impl::measureParkloc(const std::vector<LandmarkObservation>& insi
     predicted_at_last_disagreeing_fix = ekf.pose();
     const int needed = std::max(1, options.reinit_after_rejected_fixes);
     if (disagreeing_fixes >= (disagreeing_with_consensus ? needed : 2 * needed)) {
-      ekf.initialise(disagreeing->pose,
-                     fixCovariance(*disagreeing, options),
-                     result.timestamp);
+      ekf.initialise(disagreeing->pose, fixCovariance(*disagreeing, options), result.timestamp);
       result.reinitialised = true;
       result.status = TrackingStatus::kOk;
       result.warnings.push_back(
@@ -703,8 +703,8 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
     }
   }
   // Searching (no pose yet): the full frame of a few cameras per frame set, in turn.
-  const bool searching = !options.paper_mode && options.map_guided && !ekf.initialised() &&
-                         interval > 1;
+  const bool searching =
+      !options.paper_mode && options.map_guided && !ekf.initialised() && interval > 1;
   const int per_search = options.search_cameras_per_frame;
   if (searching && per_search > 0 && static_cast<size_t>(per_search) < n_cameras) {
     full_frame.assign(n_cameras, false);
@@ -851,6 +851,10 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
         a.verdict = AssociationVerdict::kLowScore;
       } else if (afm_filters_readings && instance.read && is_number && !afm.accept(*number)) {
         a.verdict = AssociationVerdict::kAnomaly;
+      } else if (instance.second_opinion && !is_tracking) {
+        // One wrong second opinion made a first fix 16.6 m off that the track never left
+        // (docs/OCR.md, session 8): only the pose gate may vouch for one.
+        a.verdict = AssociationVerdict::kUnconfirmed;
       } else {
         const auto candidates = map.findByText(instance.text, level);
         const auto observe = [&](const map::Landmark& landmark) {
@@ -906,8 +910,10 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
         }
         if (o.camera >= 0) {
           if (a.verdict == AssociationVerdict::kAccepted) inside.push_back(o);
-          // Re-localisation uses unique texts only: a gated pillar face could be any face.
-          if (a.verdict == AssociationVerdict::kGated && candidates.size() == 1)
+          // Re-localisation uses unique texts only, first opinions only: a gated pillar face
+          // could be any face, and a gated second opinion is likelier a misreading.
+          if (a.verdict == AssociationVerdict::kGated && candidates.size() == 1 &&
+              !instance.second_opinion)
             outside.push_back(o);
         }
       }

@@ -244,6 +244,8 @@ enum class AssociationVerdict {
   kNoGeometry,     // polygon cannot be cast onto the ground / face (horizon, behind)
   kAmbiguous,      // the text names several landmarks (pillar faces, levels) and no pose
                    // tells which one (added later; additive)
+  kUnconfirmed,    // a second opinion (ocr::TextInstance::second_opinion) with no tracked
+                   // pose to confirm it: it may start no fix (added later; additive)
 };
 std::string toString(AssociationVerdict verdict);
 

@@ -46,6 +46,7 @@ nlohmann::json toJson(const TextInstance& inst) {
   return {{"text", inst.text},
           {"raw_text", inst.raw_text},
           {"lexicon_match", inst.lexicon_match},
+          {"second_opinion", inst.second_opinion},
           {"class", map::toString(inst.cls)},
           {"class_id", static_cast<int>(inst.cls)},
           {"detection_score", inst.detection_score},
@@ -66,9 +67,10 @@ std::string describe(const TextInstance& inst) {
   return fmt::format("{:<10} [{}] rec {:.2f} det {:.2f} cls {:.2f} ({}; raw {}) TL,TR,BR,BL:{}",
                      inst.text.empty() ? "(unread)" : inst.text, map::toString(inst.cls),
                      inst.recognition_score, inst.detection_score, inst.class_score,
-                     inst.lexicon_match  ? "lexicon"
-                     : inst.text.empty() ? "unread"
-                                         : "free",
+                     inst.second_opinion  ? "lexicon, second opinion"
+                     : inst.lexicon_match ? "lexicon"
+                     : inst.text.empty()  ? "unread"
+                                          : "free",
                      inst.raw_text, corners);
 }
 

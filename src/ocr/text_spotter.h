@@ -22,6 +22,10 @@ struct TextInstance {
   std::string text;
   std::string raw_text;  // greedy CTC reading
   bool lexicon_match = false;
+  // The lexicon match came from the fallback recognizer alone (PpOcrModelPaths::
+  // fallback_recognition), after the first reader matched nothing: a second opinion, which
+  // the localization lets confirm a tracked pose but never start one.
+  bool second_opinion = false;
   map::TextClass cls = map::TextClass::kOther;
   float detection_score = 0.f;
   float recognition_score = 0.f;  // calibrated probability of `text`

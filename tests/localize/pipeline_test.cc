@@ -161,8 +161,8 @@ TEST_F(PipelineTest, AnUncertainFirstFixFromOneTextWaitsForMoreTexts) {
   ASSERT_TRUE(ungated.has_pose);
   ASSERT_TRUE(ungated.measurement_covariance.has_value());
   const Eigen::Matrix2d position = ungated.measurement_covariance->topLeftCorner<2, 2>();
-  const double sigma = std::sqrt(
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(position).eigenvalues().maxCoeff());
+  const double sigma =
+      std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(position).eigenvalues().maxCoeff());
   const double gate = PipelineOptions{}.first_fix_max_sigma_m;
   ASSERT_GT(sigma, gate);  // the premise: one noisy text is an uncertain fix
 
@@ -170,7 +170,8 @@ TEST_F(PipelineTest, AnUncertainFirstFixFromOneTextWaitsForMoreTexts) {
   EXPECT_FALSE(gated.has_pose);
   EXPECT_TRUE(gated.measurement_covariance.has_value());  // reported, not fused
   bool warned = false;
-  for (const auto& w : gated.warnings) warned |= w.find("first fix too uncertain") != std::string::npos;
+  for (const auto& w : gated.warnings)
+    warned |= w.find("first fix too uncertain") != std::string::npos;
   EXPECT_TRUE(warned);
 }
 
@@ -288,6 +289,28 @@ TEST_F(PipelineTest, AFlippedReadingAmongOthersDoesNotTurnTheFirstFix) {
   int outliers = 0;
   for (const auto& a : r.associations) outliers += a.verdict == AssociationVerdict::kSolverOutlier;
   EXPECT_EQ(outliers, 1);
+}
+
+// The fallback recognizer's matches (second opinions) once put a first fix 16.6 m off: they
+// may confirm a tracked pose, never start one.
+TEST_F(PipelineTest, SecondOpinionsStartNoFixButConfirmATrackedPose) {
+  Pipeline pipeline(rig, map);
+  Drive drive;
+  const auto allSecondOpinions = [](std::vector<CameraInput>& cameras) {
+    for (auto& c : cameras)
+      for (auto& t : *c.instances) t.second_opinion = true;
+  };
+  const FrameResult searching = pipeline.process(frame(drive, 0, allSecondOpinions));
+  EXPECT_FALSE(searching.has_pose);
+  EXPECT_GT(countVerdicts(searching, AssociationVerdict::kUnconfirmed), 1);
+  EXPECT_EQ(countVerdicts(searching, AssociationVerdict::kAccepted), 0);
+
+  for (int k = 1; k < 20; ++k) pipeline.process(frame(drive, k));
+  const FrameResult tracked = pipeline.process(frame(drive, 20, allSecondOpinions));
+  ASSERT_EQ(tracked.status, TrackingStatus::kOk);
+  EXPECT_EQ(countVerdicts(tracked, AssociationVerdict::kUnconfirmed), 0);
+  EXPECT_GT(countVerdicts(tracked, AssociationVerdict::kAccepted), 1);
+  EXPECT_LT(positionError(tracked, drive.truth(tracked.timestamp)), 0.02);
 }
 
 TEST_F(PipelineTest, RecoversFromKidnappingWithinThreeSeconds) {

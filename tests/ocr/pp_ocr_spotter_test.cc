@@ -255,6 +255,7 @@ TEST(PpOcrSpotterModels, AFallbackRecognizerLeavesWhatTheFirstMatchedAsItWas) {
   models.fallback_recognition = tunedRecognizerIn(PARKLOC_MODEL_DIR);
   const auto spot = spotOnTheLeftFloor(models);
   expectTheNumberMatchedAndFitted(spot);
+  EXPECT_FALSE(spot.found[0].second_opinion);  // the first reader matched it
 
   models.fallback_recognition = "/nonexistent/fallback_rec.onnx";
   expectInputErrorNaming(models, "/nonexistent/fallback_rec.onnx");

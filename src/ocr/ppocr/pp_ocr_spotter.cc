@@ -175,6 +175,7 @@ std::vector<std::optional<TextInstance>> readJobs(
     double score = -std::numeric_limits<double>::infinity();
     LexiconDecoding decoding;
     bool turned = false;
+    bool second_opinion = false;  // read by the fallback recognizer
   };
   std::vector<Best> best(jobs.size());
   // The free reading's classes per lexicon (the jobs of a request share one or a few).
@@ -187,7 +188,8 @@ std::vector<std::optional<TextInstance>> readJobs(
                             freeReadingClasses(options.reading_alphabet, *lexicon, charset));
     return classes_of.back().second;
   };
-  auto decodeAll = [&](const CropBatch& batch, const CtcRecognizer& reader, bool matches_only) {
+  // The fallback recognizer (second_opinion) contributes lexicon matches only.
+  auto decodeAll = [&](const CropBatch& batch, const CtcRecognizer& reader, bool second_opinion) {
     if (batch.crops.empty()) return;
     const auto outputs = reader.recognize(batch.crops, options.recognition_batch);
     for (size_t k = 0; k < outputs.size(); ++k) {
@@ -195,12 +197,12 @@ std::vector<std::optional<TextInstance>> readJobs(
       const auto& lexicon = jobs[job].lexicon ? *jobs[job].lexicon : kNoLexicon;
       LexiconDecoding d = decodeWithLexicon(outputs[k].matrix(), charset, lexicon, options.lexicon,
                                             readingClasses(jobs[job].lexicon));
-      if (matches_only && !d.matched) continue;
+      if (second_opinion && !d.matched) continue;
       // Both directions share the crop's step count, so their log probabilities compare;
       // a lexicon match beats a free reading.
       const double score = (d.matched ? 1e6 : 0.0) +
                            (d.matched ? std::max(d.best_log_prob, d.raw_log_prob) : d.raw_log_prob);
-      if (score > best[job].score) best[job] = {score, std::move(d), turned};
+      if (score > best[job].score) best[job] = {score, std::move(d), turned, second_opinion};
     }
   };
   decodeAll(first, recognizer, false);
@@ -240,6 +242,7 @@ std::vector<std::optional<TextInstance>> readJobs(
                                   options, camera);
     inst.raw_text = d.raw_text;
     inst.lexicon_match = d.matched;
+    inst.second_opinion = d.matched && b.second_opinion;
     inst.text = d.matched ? (*jobs[i].lexicon)[d.best_index] : read ? d.raw_text : "";
     inst.recognition_score = d.matched ? static_cast<float>(d.posterior) : d.raw_confidence;
     inst.detection_score = jobs[i].detection_score;

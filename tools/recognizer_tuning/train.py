@@ -5,7 +5,8 @@ BGR crops; the class column is not used here).
     /usr/bin/python3 tools/recognizer_tuning/train.py \
         --base third_party/models/paddleocr/ch_PP-OCRv4_rec_infer.onnx \
         --dict third_party/models/ppocr_keys_v1.txt \
-        --train /work/data/rec_train --val /work/data/rec_val --out models/recognizer_tuning.npz
+        --train /work/data/rec_train [MORE...] --val /work/data/rec_val [MORE...] \
+        --out models/recognizer_tuning.npz
 
 The backbone and the SVTR neck stay as PaddleOCR trained them: their output (FEATURES) is
 computed once per crop, and only the head after it learns: the two convolutions with their
@@ -58,7 +59,12 @@ def load_charset(path):
     return characters, class_of
 
 
-def load_split(folder):
+def load_split(folders):
+    """[(BGR crop, text)] of every FOLDER/index.tsv, in order."""
+    return [sample for folder in folders for sample in load_folder(folder)]
+
+
+def load_folder(folder):
     """[(BGR crop, text)] of FOLDER/index.tsv."""
     samples = []
     with open(os.path.join(folder, "index.tsv"), encoding="utf-8") as f:
@@ -272,8 +278,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--base", required=True)
     ap.add_argument("--dict", required=True)
-    ap.add_argument("--train", required=True)
-    ap.add_argument("--val", required=True)
+    ap.add_argument("--train", required=True, nargs="+", help="crop folders, one or more")
+    ap.add_argument("--val", required=True, nargs="+", help="crop folders, one or more")
     ap.add_argument("--out", required=True)
     ap.add_argument("--alphabet", default="0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ-")
     ap.add_argument("--epochs", type=int, default=8)

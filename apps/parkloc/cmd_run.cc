@@ -21,6 +21,7 @@ struct RunArgs {
   bool oracle = false, paper = false;
   bool no_afm = false, no_mcrp = false, no_mcap = false, no_odometry = false;
   bool no_map_guided = false;
+  bool second_opinions = false;
   int full_frame_interval = parkloc::localize::PipelineOptions{}.full_frame_interval;
   int reread_interval = parkloc::localize::PipelineOptions{}.reread_interval_frames;
   int max_reads = parkloc::localize::PipelineOptions{}.max_reads_per_frame;
@@ -50,6 +51,7 @@ void run(const RunArgs& a) {
     options.pipeline.max_reads_per_frame = a.max_reads;
     options.pipeline.sweep_detection_scale = a.sweep_scale;
     options.pipeline.search_cameras_per_frame = a.search_cameras;
+    options.pipeline.second_opinions = a.second_opinions;
   }
   // Parking numbers repeat on every level of a garage: the drive's level comes from
   // --level, else from the sequence's meta.json, else the pipeline votes.
@@ -120,6 +122,9 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_flag("--no-mcap", args->no_mcap, "Only the nearest landmark");
   cmd->add_flag("--no-odometry", args->no_odometry, "Ignore wheel odometry");
   cmd->add_flag("--no-map-guided", args->no_map_guided, "Full-frame spotting on every frame");
+  cmd->add_flag("--second-opinions", args->second_opinions,
+                "Full-frame spotting asks the fallback recognizer too; its matches can only "
+                "confirm a tracked pose");
   cmd->add_option("--full-frame-interval", args->full_frame_interval,
                   "Full-frame spotting every N frames while tracking")
       ->check(CLI::PositiveNumber)

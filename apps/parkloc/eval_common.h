@@ -37,10 +37,10 @@ struct SpotterArgs {
   std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
   std::string unread_classifier =
       std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier_unread.yml";
-  std::string floor_detector = "tuned";  // '', 'tuned' or a path (floorDetectorPath)
-  std::string recognizer;                // '', 'tuned' or a path (recognizerPath)
-  std::string band_detector;             // '', 'tuned' or a path (bandDetectorPath)
-  std::string fallback_recognizer;       // '', 'tuned' or a path (recognizerPath)
+  std::string floor_detector = "tuned";       // '', 'tuned' or a path (floorDetectorPath)
+  std::string recognizer;                     // '', 'tuned' or a path (recognizerPath)
+  std::string band_detector;                  // '', 'tuned' or a path (bandDetectorPath)
+  std::string fallback_recognizer = "tuned";  // '', 'tuned' or a path (recognizerPath)
   ocr::GroundViewOptions floor_view;
   double floor_unclip_ratio = ocr::PpOcrOptions{}.floor_db.unclip_ratio;
   float floor_box_threshold = ocr::PpOcrOptions{}.floor_db.box_threshold;
@@ -71,9 +71,10 @@ struct SpotterArgs {
                     "Recognizer: '' PaddleOCR's own (default), 'tuned' the one parkloc "
                     "fine-tuned (in --models), or an ONNX file");
     cmd->add_option("--fallback-recognizer", fallback_recognizer,
-                    "Second recognizer for the crops the first matches to no lexicon entry: '' "
-                    "none (default), 'tuned' the one parkloc fine-tuned (in --models), or an "
-                    "ONNX file");
+                    "Second recognizer for the full-frame crops the first matches to no lexicon "
+                    "entry (its matches are second opinions): 'tuned' the one parkloc "
+                    "fine-tuned (in --models), '' none, or an ONNX file")
+        ->capture_default_str();
     cmd->add_option("--floor-view-near", floor_view.near,
                     "Floor view: where it starts, metres ahead of a camera (negative: behind)")
         ->check(CLI::Range(-5.0, 5.0))

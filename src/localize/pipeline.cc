@@ -789,6 +789,7 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
         camera_result.regions = static_cast<int>(request.regions.size());
       } else {
         request.lexicon = lexicon;
+        request.second_opinions = options.second_opinions;
         // While tracking, the full frame is a sweep for what the prediction missed.
         if (is_tracking && options.reread_interval_frames > 0) {
           request.max_reads = std::max(0, options.max_reads_per_frame);

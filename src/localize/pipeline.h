@@ -190,6 +190,12 @@ struct PipelineOptions {
   // every few frame sets, so a text missed at this scale is only a little late).
   double search_detection_scale = 0.75;
 
+  // Ask the spotter for second opinions (ocr::SpotRequest::second_opinions) on full frames
+  // (added later). Off: on the test drives they moved no error figure, yet cost the full-frame
+  // frame sets 30-50 ms at p95 and p99 (docs/OCR.md, session 10); and a second opinion can
+  // only confirm a tracked pose, never start one (AssociationVerdict::kUnconfirmed).
+  bool second_opinions = false;
+
   // Optional known starting pose (e.g. from a previous session); otherwise the first
   // solver fix initialises.
   std::optional<geometry::Pose2> initial_pose;

@@ -65,6 +65,9 @@ struct SpotRequest {
   // Full frame: the detector's input is scaled by this (< 1: coarser and faster, for such a
   // sweep; large text only).
   float detection_scale = 1.f;
+  // Full frame: have the engine's fallback recognizer, if it has one, read again what the
+  // first matched to no lexicon entry (TextInstance::second_opinion) (added later).
+  bool second_opinions = true;
 };
 
 class TextSpotter {

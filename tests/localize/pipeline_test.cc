@@ -455,5 +455,25 @@ TEST_F(PipelineTest, MapGuidedSpottingAsksForPredictedRegionsAndFullFramesNowAnd
   EXPECT_EQ(guided_frames, 16);
 }
 
+TEST_F(PipelineTest, AsksForSecondOpinionsOnFullFramesOnlyWhenTold) {
+  for (const bool wanted : {false, true}) {
+    SceneSpotter spotter(rig, map);
+    PipelineOptions options;
+    options.second_opinions = wanted;
+    Pipeline pipeline(rig, map, options, &spotter);
+    FrameInput in = frame(Drive{}, 0);
+    for (size_t c = 0; c < in.cameras.size(); ++c) {
+      in.cameras[c].instances.reset();
+      in.cameras[c].image = cv::Mat(4, 4, CV_8UC3, cv::Scalar(static_cast<double>(c), 0, 0));
+    }
+    pipeline.process(in);
+    ASSERT_FALSE(spotter.requests.empty());
+    for (const auto& q : spotter.requests) {
+      ASSERT_TRUE(q.regions.empty());  // not initialised: full frames
+      EXPECT_EQ(q.second_opinions, wanted);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace parkloc::localize

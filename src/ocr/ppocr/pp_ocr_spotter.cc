@@ -315,9 +315,11 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     job.read_expand_y = read_expand_y;
     jobs.push_back(job);
   }
+  const CtcRecognizer* fallback = nets_->fallback_recognizer && request.second_opinions
+                                      ? &*nets_->fallback_recognizer
+                                      : nullptr;
   auto read = readJobs(image, jobs, camera, options_, nets_->recognizer,
-                       nets_->direction ? &*nets_->direction : nullptr, nets_->charset,
-                       nets_->fallback_recognizer ? &*nets_->fallback_recognizer : nullptr);
+                       nets_->direction ? &*nets_->direction : nullptr, nets_->charset, fallback);
   std::vector<TextInstance> out;
   for (auto& r : read)
     if (r) out.push_back(std::move(*r));

@@ -121,7 +121,8 @@ void BM_SpotFullFrameShipped(benchmark::State& state) {
   request.lexicon = {"B2-117", "B2-118", "B2-119"};
   size_t found = 0;
   for (auto _ : state) found = shipped->spot(frame().image, request).size();
-  state.SetLabel("ground, tuned floor detector, class heads, found " + std::to_string(found));
+  state.SetLabel("ground, tuned floor detector, class heads, second opinions, found " +
+                 std::to_string(found));
 }
 BENCHMARK(BM_SpotFullFrameShipped)->Unit(benchmark::kMillisecond)->UseRealTime();
 

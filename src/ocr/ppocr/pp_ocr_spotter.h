@@ -49,10 +49,11 @@ struct PpOcrModelPaths {
   std::string band_detection;
   std::string recognition;
   // A second recognizer for the crops whose reading matches no lexicon entry (full-frame
-  // spotting); only its lexicon matches are taken. Empty: none (the default: with parkloc's
-  // tuned recognizer it finds and reads more numbers, but some of its matches are wrong
-  // entries, and one sent a whole test drive's localization 16.7 m off; docs/OCR.md,
-  // session 8).
+  // spotting, SpotRequest::second_opinions); only its lexicon matches are taken, marked
+  // TextInstance::second_opinion. Empty: none. The command line gives parkloc's tuned
+  // recognizer (tunedRecognizerIn), which finds and reads more numbers; some of its matches
+  // are wrong entries, so the localization never starts a fix from one (docs/OCR.md,
+  // sessions 8 and 10).
   std::string fallback_recognition;
   std::string direction;  // empty: decide the direction by decoding both
   std::string dictionary;

@@ -50,6 +50,8 @@ INPUT_WIDTH = 320
 def load_charset(path):
     """Class of each character as the C++ Charset numbers them: 0 blank, line i -> class i,
     then a space; a character listed twice keeps its first class."""
+    if not os.path.isfile(path):
+        raise SystemExit(f"train.py: dictionary {path} not found")
     with open(path, encoding="utf-8") as f:
         characters = [line.rstrip("\n").rstrip("\r") for line in f]
     characters.append(" ")
@@ -67,7 +69,10 @@ def load_split(folders):
 def load_folder(folder):
     """[(BGR crop, text)] of FOLDER/index.tsv."""
     samples = []
-    with open(os.path.join(folder, "index.tsv"), encoding="utf-8") as f:
+    index = os.path.join(folder, "index.tsv")
+    if not os.path.isfile(index):
+        raise SystemExit(f"train.py: {index} not found (crops of parkloc train recognizer-data)")
+    with open(index, encoding="utf-8") as f:
         for line in f:
             line = line.rstrip("\n")
             if not line:

@@ -271,6 +271,10 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         sequenceConditions(seq.metaJson(), seq.dir() + "/meta.json");
     ocr::SpotRequest full_frame;
     full_frame.lexicon = mapLexicon(seq.map());
+    // Asked as the paper's pipeline asks when it spots by itself: it never tracks, so a
+    // second opinion could only be marked unconfirmed there, and its reading time would be
+    // timed as the paper's for nothing.
+    full_frame.second_opinions = localize::PipelineOptions::paper().second_opinions;
     size_t frames = seq.timestamps().size();
     if (options.max_frames_per_sequence) frames = std::min(frames, options.max_frames_per_sequence);
     if (frames == 0) continue;
@@ -497,6 +501,10 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     report.ocr = ocr_evaluator.result();
     for (Table& t : table3All(ocr_evaluator.result(), afm_counts))
       report.tables.push_back(std::move(t));
+    if (!localize::PipelineOptions::paper().second_opinions)
+      report.notes.push_back(
+          "OCR figures from the full-frame spotting that fed the paper's pipeline, without "
+          "second opinions (`parkloc eval ocr` asks for them by default).");
   }
   {
     std::vector<AblationRow> rows;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,7 @@
 #include "io/odometry_csv.h"
 #include "io/sequence.h"
 #include "io/tum.h"
+#include "ocr/text_spotter.h"
 
 namespace parkloc::eval {
 namespace {
@@ -119,6 +121,33 @@ TEST_F(EvaluationTest, WithoutASpotterTheOracleIsTheMainVariant) {
   const EvaluationReport r = evaluateSequences(splitSequences(root_, "test"), nullptr, options);
   EXPECT_EQ(r.main.key, "oracle");
   EXPECT_EQ(r.main.frames, 20u);
+}
+
+// Finds nothing; notes whether each full-frame request asked for second opinions.
+class RequestRecordingSpotter : public ocr::TextSpotter {
+ public:
+  std::string name() const override { return "request-recording"; }
+  std::vector<ocr::TextInstance> spot(const cv::Mat&, const ocr::SpotRequest& request) override {
+    if (request.regions.empty()) (request.second_opinions ? with : without) += 1;
+    return {};
+  }
+  int with = 0, without = 0;
+};
+
+TEST_F(EvaluationTest, ThePaperPipelinesSharedPassAsksForNoSecondOpinions) {
+  EvaluationOptions options;
+  options.parkloc = false;
+  options.oracle = false;
+  options.odometry_only = false;
+  options.max_frames_per_sequence = 3;
+  RequestRecordingSpotter spotter;
+  const EvaluationReport r = evaluateSequences(splitSequences(root_, "test"), &spotter, options);
+  EXPECT_EQ(spotter.without, 12);  // 3 frame sets of 4 cameras, spotted once for 8 variants
+  EXPECT_EQ(spotter.with, 0);
+  const bool noted = std::any_of(r.notes.begin(), r.notes.end(), [](const std::string& n) {
+    return n.find("without second opinions") != std::string::npos;
+  });
+  EXPECT_TRUE(noted);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "eval/evaluation.h"
 #include "eval/report.h"
 #include "eval/tables.h"
+#include "eval/text_outcomes.h"
 
 namespace {
 
@@ -22,6 +23,7 @@ struct EvalArgs {
   std::string split = "test";
   std::string out = "parkloc-eval";
   std::string json;
+  std::string outcomes;
   int max_frames = 0;
   bool no_paper = false;
   bool no_oracle = false;
@@ -41,6 +43,19 @@ void runEvalOcr(const EvalArgs& a) {
   options.use_lexicon = !a.no_lexicon;
   options.metrics.inside_image_only = !a.whole_polygons;
   options.progress = [&](const eval::Progress& p) { progress(p); };
+  std::ofstream outcomes;
+  if (!a.outcomes.empty()) {
+    outcomes.open(a.outcomes);
+    if (!outcomes) throw IoError(a.outcomes + ": cannot open for writing");
+    options.on_image = [&](const std::string& sequence, const io::ImageLabels& labels,
+                           const std::vector<ocr::TextInstance>& found) {
+      for (const eval::TextOutcome& o : eval::textOutcomes(labels, found, options.metrics)) {
+        nlohmann::json j = eval::outcomeJson(o, labels, found);
+        j["sequence"] = sequence;
+        outcomes << j.dump() << "\n";
+      }
+    };
+  }
   const eval::OcrEvaluation result = eval::evaluateOcr(sequences, *spotter, options);
   progress.finish();
   std::cout << fmt::format("{} images from {} sequences ({} split of {}), engine {}\n\n",
@@ -66,6 +81,7 @@ void runEvalOcr(const EvalArgs& a) {
     out << j.dump(2) << "\n";
     std::cout << "wrote " << a.json << "\n";
   }
+  if (!a.outcomes.empty()) std::cout << "wrote " << a.outcomes << "\n";
 }
 
 void runEval(const EvalArgs& a) {
@@ -116,6 +132,9 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
       ->required();
   ocr_cmd->add_option("--split", ocr_args->split, "train | val | test")->capture_default_str();
   ocr_cmd->add_option("--json", ocr_args->json, "Write every metric as JSON");
+  ocr_cmd->add_option("--outcomes", ocr_args->outcomes,
+                      "Write what became of each cared-for label (found, missed) and each false "
+                      "detection, one JSON object a line");
   ocr_cmd->add_option("--max-frames", ocr_args->max_frames, "At most N frame sets per sequence")
       ->check(CLI::NonNegativeNumber);
   ocr_cmd->add_flag("--no-lexicon", ocr_args->no_lexicon, "Free reading only");

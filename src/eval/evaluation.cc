@@ -228,8 +228,8 @@ OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSp
     if (options.use_lexicon) request.lexicon = mapLexicon(seq.map());
     size_t frames = seq.timestamps().size();
     if (options.max_frames_per_sequence) frames = std::min(frames, options.max_frames_per_sequence);
-    const std::string stage = fmt::format("sequence {}/{} {}", s + 1, sequences.size(),
-                                          std::filesystem::path(seq.dir()).filename().string());
+    const std::string name = std::filesystem::path(seq.dir()).filename().string();
+    const std::string stage = fmt::format("sequence {}/{} {}", s + 1, sequences.size(), name);
     for (size_t i = 0; i < frames; ++i) {
       for (const std::string& camera : seq.cameras()) {
         const std::optional<io::ImageLabels> labels = seq.loadLabels(i, camera);
@@ -240,6 +240,7 @@ OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSp
         const auto start = Clock::now();
         const std::vector<ocr::TextInstance> found = spotter.spot(image, request);
         evaluator.add(*labels, found, conditions, msSince(start) / 1000.0);
+        if (options.on_image) options.on_image(name, *labels, found);
       }
       if (options.progress) options.progress({stage, i + 1, frames});
     }

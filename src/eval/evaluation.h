@@ -26,6 +26,11 @@ struct OcrRunOptions {
   size_t max_frames_per_sequence = 0;  // 0: all
   bool use_lexicon = true;             // decode against the map's texts
   ProgressCallback progress;
+  // Called with every scored image: the drive's folder name, its labels and what the
+  // spotter found (for per-instance outcomes, eval/text_outcomes.h).
+  std::function<void(const std::string& sequence, const io::ImageLabels& labels,
+                     const std::vector<ocr::TextInstance>& found)>
+      on_image;
 };
 
 // Table 3 of the paper: full-frame spotting of every labelled camera image.

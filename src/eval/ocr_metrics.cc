@@ -51,6 +51,10 @@ MatchingOptions matchingFor(const OcrEvaluationOptions& options, const io::Image
   return out;
 }
 
+bool caredFor(const io::LabelInstance& instance, const OcrEvaluationOptions& options) {
+  return instance.legible && instance.occluded_fraction < options.dont_care_occlusion;
+}
+
 namespace {
 
 // The counts of one image's matching: each cared-for truth, match, miss and false detection
@@ -101,7 +105,7 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
   for (const io::LabelInstance& instance : truth.instances) {
     truth_quads.push_back(io::pointQuad(instance.polygon));
     const bool occluded = instance.occluded_fraction >= options_.dont_care_occlusion;
-    dont_care.push_back(occluded || !instance.legible);
+    dont_care.push_back(!caredFor(instance, options_));
     dont_care_by_height.push_back(occluded ||
                                   geometry::apparentHeightPx(instance.polygon) < kHeightRuleMinPx);
   }

@@ -77,6 +77,9 @@ struct OcrEvaluationOptions {
 // The matching options for one labelled image.
 MatchingOptions matchingFor(const OcrEvaluationOptions& options, const io::ImageLabels& labels);
 
+// Whether a label counts in the tables: legible and less than dont_care_occlusion occluded.
+bool caredFor(const io::LabelInstance& instance, const OcrEvaluationOptions& options);
+
 // The bins of OcrEvaluation::parking_numbers_by_height, in increasing order, and the bin of
 // an apparent height (geometry::apparentHeightPx, the simulator's legibility measure).
 const std::vector<std::string>& heightBins();

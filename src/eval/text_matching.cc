@@ -27,12 +27,13 @@ ImageMatching matchDetections(const std::vector<Quad>& truth_quads,
   assert(dont_care.size() == truth_quads.size());
   const auto truths = compared(truth_quads, options);
   const auto detections = compared(detection_quads, options);
-  std::vector<MatchedPair> candidates;
+  std::vector<MatchedPair> candidates, nearest(truths.size());
   for (size_t t = 0; t < truths.size(); ++t) {
     if (dont_care[t]) continue;
     for (size_t d = 0; d < detections.size(); ++d) {
       const double iou = polygonIoU(truths[t], detections[d]);
       if (iou >= options.min_iou) candidates.push_back({t, d, iou});
+      if (iou > nearest[t].iou) nearest[t] = {t, d, iou};
     }
   }
   std::stable_sort(candidates.begin(), candidates.end(),
@@ -46,7 +47,9 @@ ImageMatching matchDetections(const std::vector<Quad>& truth_quads,
     out.matches.push_back(pair);
   }
   for (size_t t = 0; t < truths.size(); ++t) {
-    if (!dont_care[t] && !truth_used[t]) out.missed_truths.push_back(t);
+    if (dont_care[t] || truth_used[t]) continue;
+    out.missed_truths.push_back(t);
+    if (nearest[t].iou > 0.0) out.nearest_to_missed.push_back(nearest[t]);
   }
   for (size_t d = 0; d < detections.size(); ++d) {
     if (detection_used[d]) continue;

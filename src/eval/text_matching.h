@@ -28,7 +28,10 @@ struct MatchedPair {
 
 struct ImageMatching {
   std::vector<MatchedPair> matches;
-  std::vector<size_t> missed_truths;       // cared-for ground truth without a match (FN)
+  std::vector<size_t> missed_truths;  // cared-for ground truth without a match (FN)
+  // For each missed truth that some detection overlaps (under min_iou), the detection that
+  // overlaps it most: what was found there, for looking at the misses.
+  std::vector<MatchedPair> nearest_to_missed;
   std::vector<size_t> false_detections;    // detections without a match (FP)
   std::vector<size_t> ignored_detections;  // unmatched detections on don't-care regions
 };

@@ -6,12 +6,6 @@
 namespace parkloc::eval {
 namespace {
 
-// A polygon as the matching compares it: its part inside the image when the options say so.
-std::vector<cv::Point2f> compared(const Quad& quad, const MatchingOptions& options) {
-  const std::vector<cv::Point2f> polygon(quad.begin(), quad.end());
-  return options.image_size ? clippedToImage(polygon, *options.image_size) : polygon;
-}
-
 nlohmann::json pointsJson(const Quad& quad) {
   nlohmann::json out = nlohmann::json::array();
   for (const cv::Point2f& p : quad) out.push_back({p.x, p.y});
@@ -42,8 +36,8 @@ std::vector<TextOutcome> textOutcomes(const io::ImageLabels& truth,
     dont_care.push_back(!caredFor(instance, options));
   }
   for (const ocr::TextInstance& d : detections) detection_quads.push_back(d.polygon);
-  const MatchingOptions matching = matchingFor(options, truth);
-  const ImageMatching m = matchDetections(truth_quads, dont_care, detection_quads, matching);
+  const ImageMatching m =
+      matchDetections(truth_quads, dont_care, detection_quads, matchingFor(options, truth));
 
   std::vector<TextOutcome> out;
   for (const MatchedPair& p : m.matches)
@@ -51,12 +45,8 @@ std::vector<TextOutcome> textOutcomes(const io::ImageLabels& truth,
         {OutcomeKind::kFound, static_cast<int>(p.truth), static_cast<int>(p.detection), p.iou});
   for (size_t t : m.missed_truths) {
     TextOutcome miss{OutcomeKind::kMissed, static_cast<int>(t), -1, 0.0};
-    const auto label = compared(truth_quads[t], matching);
-    for (size_t d = 0; d < detection_quads.size(); ++d) {
-      const double iou = polygonIoU(label, compared(detection_quads[d], matching));
-      if (iou > miss.iou)
-        miss = {OutcomeKind::kMissed, static_cast<int>(t), static_cast<int>(d), iou};
-    }
+    for (const MatchedPair& n : m.nearest_to_missed)
+      if (n.truth == t) miss.detection = static_cast<int>(n.detection), miss.iou = n.iou;
     out.push_back(miss);
   }
   for (size_t d : m.false_detections)

@@ -33,6 +33,7 @@ TEST(TextMatching, OneToOneAtIoUHalf) {
   EXPECT_EQ(m.matches[0].detection, 0u);
   EXPECT_NEAR(m.matches[0].iou, 0.81, 1e-6);
   EXPECT_EQ(m.missed_truths, std::vector<size_t>({1}));
+  EXPECT_TRUE(m.nearest_to_missed.empty());  // nothing overlaps t1
   EXPECT_EQ(m.false_detections, std::vector<size_t>({1, 2}));
   EXPECT_TRUE(m.ignored_detections.empty());
 }
@@ -43,6 +44,9 @@ TEST(TextMatching, BelowHalfIoUIsNoMatch) {
   EXPECT_TRUE(m.matches.empty());
   EXPECT_EQ(m.missed_truths.size(), 1u);
   EXPECT_EQ(m.false_detections.size(), 1u);
+  ASSERT_EQ(m.nearest_to_missed.size(), 1u);  // the box beside the miss is what was found there
+  EXPECT_EQ(m.nearest_to_missed[0].detection, 0u);
+  EXPECT_NEAR(m.nearest_to_missed[0].iou, 1.0 / 3.0, 1e-6);
 }
 
 TEST(TextMatching, GreedyTakesTheBestPairFirst) {

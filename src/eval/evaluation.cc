@@ -257,6 +257,13 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
   const bool shared_ocr = std::any_of(tallies.begin(), tallies.end(), [](const VariantTally& t) {
     return t.spec.source == Source::kSharedFullFrame;
   });
+  // The shared pass asks for second opinions only when a pipeline it feeds would ask for
+  // them spotting by itself: the paper's never does (it never tracks, so a second opinion
+  // could only be unconfirmed there, and its reading time would be timed for nothing).
+  const bool shared_second_opinions =
+      std::any_of(tallies.begin(), tallies.end(), [](const VariantTally& t) {
+        return t.spec.source == Source::kSharedFullFrame && t.spec.options.second_opinions;
+      });
   OcrEvaluator ocr_evaluator(options.ocr_metrics);
   // Without the shared full-frame pass, the OCR figures come from the full-frame spotting
   // the parkloc pipeline does by itself (its map-guided frames are left out).
@@ -272,10 +279,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         sequenceConditions(seq.metaJson(), seq.dir() + "/meta.json");
     ocr::SpotRequest full_frame;
     full_frame.lexicon = mapLexicon(seq.map());
-    // Asked as the paper's pipeline asks when it spots by itself: it never tracks, so a
-    // second opinion could only be marked unconfirmed there, and its reading time would be
-    // timed as the paper's for nothing.
-    full_frame.second_opinions = localize::PipelineOptions::paper().second_opinions;
+    full_frame.second_opinions = shared_second_opinions;
     size_t frames = seq.timestamps().size();
     if (options.max_frames_per_sequence) frames = std::min(frames, options.max_frames_per_sequence);
     if (frames == 0) continue;
@@ -502,7 +506,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     report.ocr = ocr_evaluator.result();
     for (Table& t : table3All(ocr_evaluator.result(), afm_counts))
       report.tables.push_back(std::move(t));
-    if (!localize::PipelineOptions::paper().second_opinions)
+    if (!shared_second_opinions)
       report.notes.push_back(
           "OCR figures from the full-frame spotting that fed the paper's pipeline, without "
           "second opinions (`parkloc eval ocr` asks for them by default).");

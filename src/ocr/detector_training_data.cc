@@ -15,6 +15,7 @@
 #include "io/sequence_conditions.h"
 #include "ocr/quad.h"
 #include "ocr/training_data_files.h"
+#include "ocr/visible_part.h"
 
 namespace parkloc::ocr {
 namespace {
@@ -47,11 +48,36 @@ bool whollyInside(const std::array<cv::Point2f, 4>& corners, const cv::Size& siz
                      [&](const cv::Point2f& p) { return insideView(p, size); });
 }
 
+// Text a reader could read where it is seen: legible and not hidden too much.
+bool readable(const io::LabelInstance& inst, const DetectorDataOptions& options) {
+  return inst.legible && inst.occluded_fraction < options.max_occluded_fraction;
+}
+
 // Care for the loss: text a reader could read, wholly in the image the detector sees.
 bool careFor(const io::LabelInstance& inst, bool wholly_inside,
              const DetectorDataOptions& options) {
-  return inst.legible && inst.occluded_fraction < options.max_occluded_fraction &&
-         !inst.truncated && wholly_inside;
+  return readable(inst, options) && !inst.truncated && wholly_inside;
+}
+
+// Floor text cut by the raw image's edge (black in the view) or by the view's own: the part
+// the view shows is care when it keeps enough of the text to be worth boxing, else the whole
+// text is a don't-care region. The evaluation matches such text by its part inside the image.
+void keepSeenPart(const GroundView& view, const cv::Size& raw_size, const io::LabelInstance& inst,
+                  const DetectorDataOptions& options, ViewText& t) {
+  const auto seen = [&](const cv::Point2f& p) {
+    if (!insideView(p, view.size())) return false;
+    const auto raw = view.rawFromView(p);
+    return raw && insideView(*raw, raw_size);
+  };
+  auto part = visiblePart(t.corners, seen);
+  t.care = part && part->length_fraction >= options.min_seen_length &&
+           part->height_fraction >= options.min_seen_height && readable(inst, options);
+  if (!t.care) return;
+  // The span runs over whole grid cells, which may end a little beyond the view's edge.
+  const cv::Size size = view.size();
+  for (auto& c : part->quad)
+    c = {std::clamp(c.x, 0.f, size.width - 1.f), std::clamp(c.y, 0.f, size.height - 1.f)};
+  t.corners = part->quad;
 }
 
 // The label's class and text; commas become spaces (the label line is comma separated).
@@ -65,8 +91,9 @@ void copyClassAndText(const io::LabelInstance& inst, ViewText& t) {
 // projections of the text corners, so casting them onto the floor places floor text exactly;
 // text on pillars and plates lands farther out (and nowhere above the horizon), so it is kept
 // only as a don't-care region, and only when that region is wholly in the view.
-std::vector<ViewText> viewTexts(const GroundView& view, const io::ImageLabels& labels,
-                                const map::HdMap& map, const DetectorDataOptions& options) {
+std::vector<ViewText> viewTexts(const GroundView& view, const cv::Size& raw_size,
+                                const io::ImageLabels& labels, const map::HdMap& map,
+                                const DetectorDataOptions& options) {
   std::vector<ViewText> out;
   for (const auto& inst : labels.instances) {
     ViewText t;
@@ -85,7 +112,10 @@ std::vector<ViewText> viewTexts(const GroundView& view, const io::ImageLabels& l
     if (floor) {
       if (!overlapsView(t.corners, view.size())) continue;
       // A truncated instance runs off the raw image, i.e. into the black part of the view.
-      t.care = careFor(inst, all_inside, options);
+      if (all_inside && !inst.truncated)
+        t.care = readable(inst, options);
+      else
+        keepSeenPart(view, raw_size, inst, options, t);
     } else if (!all_inside) {
       continue;
     }
@@ -186,7 +216,7 @@ DetectorDataStats writeDetectorTrainingData(const std::vector<std::string>& sequ
         const std::string labels_rel = "labels/" + stem + ".txt";
         std::vector<ViewText> texts;
         if (view) {
-          texts = viewTexts(*view, *labels, sequence.map(), options);
+          texts = viewTexts(*view, raw.size(), *labels, sequence.map(), options);
           writeImage(root / image_rel, view->render(raw));
         } else {
           const cv::Rect rows = bandRect(options.band, raw.size());

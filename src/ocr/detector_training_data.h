@@ -9,8 +9,9 @@
 // (conditions: io::sequenceConditions joined by "+", "none" when there are none)
 // Label corners are view pixels in the labels' order (TL, TR, BR, BL of the text as it
 // reads), one decimal; class is the dataset's id (0 pillar, 1 parking number, 2 other); commas
-// in the text become spaces. care 1: floor text, legible, less than half occluded, not
-// truncated and wholly in the view; care 0 is a "don't care" region for the loss.
+// in the text become spaces. care 1: floor text, legible and less than half occluded; text
+// cut by the raw image's edge or the view's is labelled by the part the view shows (care when
+// that part keeps enough of it); care 0 is a "don't care" region for the loss.
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -35,6 +36,10 @@ struct DetectorDataOptions {
   size_t frame_stride = 1;             // use every n-th frame set
   size_t max_frames_per_sequence = 0;  // 0: all
   double max_occluded_fraction = 0.5;  // care only below this
+  // Floor text cut by an edge is care when its seen part keeps at least these shares of its
+  // length and height (the annotation labels text with 0.3 of it inside the image).
+  double min_seen_length = 0.3;
+  double min_seen_height = 0.75;
   // Called after each sequence.
   std::function<void(size_t done, size_t total)> progress;
 };

@@ -66,7 +66,7 @@ TEST(DetectorTrainingData, WritesGroundViewsWithTheirTextPolygons) {
 
   std::ifstream index(root / "out" / "index.txt");
   std::string image_rel, labels_rel, condition;
-  size_t images = 0, care = 0, dont_care = 0, care_numbers = 0;
+  size_t images = 0, care = 0, dont_care = 0, care_numbers = 0, care_cut_by_the_edge = 0;
   while (index >> image_rel >> labels_rel >> condition) {
     ++images;
     EXPECT_EQ(condition, "bright");
@@ -88,7 +88,9 @@ TEST(DetectorTrainingData, WritesGroundViewsWithTheirTextPolygons) {
       ++care;
       if (parsed->cls == 1) ++care_numbers;
       cv::Point2f centre(0.f, 0.f);
+      bool at_edge = false;
       for (const auto& c : parsed->corners) {
+        at_edge |= c.x < 0.5f || c.y < 0.5f || c.x > view.cols - 1.5f || c.y > view.rows - 1.5f;
         EXPECT_GE(c.x, 0.f) << line;
         EXPECT_GE(c.y, 0.f) << line;
         EXPECT_LE(c.x, view.cols - 1.f) << line;
@@ -98,12 +100,15 @@ TEST(DetectorTrainingData, WritesGroundViewsWithTheirTextPolygons) {
       // Care text lies where the camera sees the floor, not in the view's black margin.
       EXPECT_NE(view.at<cv::Vec3b>(cvRound(centre.y), cvRound(centre.x)), cv::Vec3b(0, 0, 0))
           << line;
+      if (at_edge) ++care_cut_by_the_edge;
     }
   }
   EXPECT_EQ(images, stats.images);
   EXPECT_EQ(care, stats.care_instances);
   EXPECT_EQ(dont_care, stats.dont_care_instances);
   EXPECT_GT(care_numbers, 0u);
+  // Text cut by the view's edge is labelled by its part inside (this sequence has some).
+  EXPECT_GT(care_cut_by_the_edge, 0u);
   fs::remove_all(root);
 }
 

@@ -52,7 +52,11 @@ void run(const OcrArgs& args) {
   }
   ocr::SpotRequest request;
   if (!args.lexicon.empty()) request.lexicon = ocr::loadLexiconFile(args.lexicon);
-  if (!args.map.empty()) request.lexicon = ocr::lexiconFromMap(io::loadMap(args.map));
+  if (!args.map.empty()) {
+    const map::HdMap map = io::loadMap(args.map);
+    request.lexicon = ocr::lexiconFromMap(map);
+    request.floor_lexicon = ocr::floorLexiconFromMap(map);
+  }
   request.camera = camera;
   ocr::PpOcrSpotter spotter(options);
 

@@ -16,6 +16,7 @@
 #include "eval/tables.h"
 #include "io/sequence.h"
 #include "localize/oracle_source.h"
+#include "ocr/ocr_io.h"
 
 namespace parkloc::eval {
 namespace {
@@ -24,12 +25,6 @@ using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-std::vector<std::string> mapLexicon(const map::HdMap& map) {
-  std::set<std::string> texts;
-  for (const map::Landmark& l : map.landmarks()) texts.insert(l.text);
-  return {texts.begin(), texts.end()};
 }
 
 Quad labelQuad(const io::LabelInstance& l) {
@@ -225,7 +220,10 @@ OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSp
     const std::vector<std::string> conditions =
         sequenceConditions(seq.metaJson(), seq.dir() + "/meta.json");
     ocr::SpotRequest request;
-    if (options.use_lexicon) request.lexicon = mapLexicon(seq.map());
+    if (options.use_lexicon) {
+      request.lexicon = ocr::lexiconFromMap(seq.map());
+      request.floor_lexicon = ocr::floorLexiconFromMap(seq.map());
+    }
     size_t frames = seq.timestamps().size();
     if (options.max_frames_per_sequence) frames = std::min(frames, options.max_frames_per_sequence);
     const std::string name = std::filesystem::path(seq.dir()).filename().string();
@@ -278,7 +276,8 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     const std::vector<std::string> conditions =
         sequenceConditions(seq.metaJson(), seq.dir() + "/meta.json");
     ocr::SpotRequest full_frame;
-    full_frame.lexicon = mapLexicon(seq.map());
+    full_frame.lexicon = ocr::lexiconFromMap(seq.map());
+    full_frame.floor_lexicon = ocr::floorLexiconFromMap(seq.map());
     full_frame.second_opinions = shared_second_opinions;
     size_t frames = seq.timestamps().size();
     if (options.max_frames_per_sequence) frames = std::min(frames, options.max_frames_per_sequence);

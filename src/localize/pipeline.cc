@@ -136,7 +136,8 @@ struct Pipeline::Impl {
 
   FloorHeights floors;
   std::vector<geometry::GroundHomography> homographies;
-  std::vector<std::string> lexicon;  // every text of the map (full-frame spotting)
+  std::vector<std::string> lexicon;        // every text of the map (full-frame spotting)
+  std::vector<std::string> floor_lexicon;  // the texts of it painted on the floor
   SolverOptions solver_options;
   GateOptions gate_options;
   RoiOptions roi_options;
@@ -184,7 +185,10 @@ struct Pipeline::Impl {
     for (const auto& camera : rig.cameras)
       homographies.push_back(geometry::GroundHomography::fromCamera(camera));
     for (const auto& l : map.landmarks())
-      if (options.level.empty() || l.level == options.level) lexicon.push_back(l.text);
+      if (options.level.empty() || l.level == options.level) {
+        lexicon.push_back(l.text);
+        if (l.surface == map::Surface::kGround) floor_lexicon.push_back(l.text);
+      }
     solver_options.pixel_sigma = options.pixel_sigma;
     solver_options.huber_threshold_px = options.huber_threshold_px;
     solver_options.max_iterations = options.solver_max_iterations;
@@ -789,6 +793,7 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
         camera_result.regions = static_cast<int>(request.regions.size());
       } else {
         request.lexicon = lexicon;
+        request.floor_lexicon = floor_lexicon;
         request.second_opinions = options.second_opinions;
         // While tracking, the full frame is a sweep for what the prediction missed.
         if (is_tracking && options.reread_interval_frames > 0) {

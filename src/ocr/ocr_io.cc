@@ -40,6 +40,13 @@ std::vector<std::string> lexiconFromMap(const map::HdMap& map) {
   return {texts.begin(), texts.end()};
 }
 
+std::vector<std::string> floorLexiconFromMap(const map::HdMap& map) {
+  std::set<std::string> texts;
+  for (const auto& landmark : map.landmarks())
+    if (landmark.surface == map::Surface::kGround) texts.insert(landmark.text);
+  return {texts.begin(), texts.end()};
+}
+
 nlohmann::json toJson(const TextInstance& inst) {
   nlohmann::json polygon = nlohmann::json::array();
   for (const auto& p : inst.polygon) polygon.push_back({p.x, p.y});

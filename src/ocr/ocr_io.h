@@ -19,6 +19,8 @@ cv::Mat readImage(const std::string& path);
 std::vector<std::string> loadLexiconFile(const std::string& path);
 // Every distinct text of the map's landmarks.
 std::vector<std::string> lexiconFromMap(const map::HdMap& map);
+// Every distinct text painted on the floor (SpotRequest::floor_lexicon).
+std::vector<std::string> floorLexiconFromMap(const map::HdMap& map);
 
 nlohmann::json toJson(const TextInstance& instance);
 nlohmann::json toJson(const std::vector<TextInstance>& instances);

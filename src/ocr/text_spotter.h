@@ -53,6 +53,10 @@ struct RegionOfInterest {
 struct SpotRequest {
   // Texts to decode against (CTC forward score); empty means free reading only.
   std::vector<std::string> lexicon;
+  // The texts painted on the floor, when known (added later): what an engine finds in a
+  // bird's-eye view of the floor decodes against these instead, since upright text (pillars)
+  // never shows there as text. Empty: such boxes decode against `lexicon` too.
+  std::vector<std::string> floor_lexicon;
   // When non-empty, spot only inside these regions instead of the full frame.
   std::vector<RegionOfInterest> regions;
   // The camera that took the image, when known (not owned): engines may use its

@@ -309,7 +309,9 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     ReadJob job;
     job.quad = box.quad;
     job.detection_score = box.score;
-    job.lexicon = &request.lexicon;
+    job.lexicon = role == DetectorRole::kFloorView && !request.floor_lexicon.empty()
+                      ? &request.floor_lexicon
+                      : &request.lexicon;
     job.keep_unread = role == DetectorRole::kFloorView && box.score >= options_.confident_box_score;
     job.read_expand_x = read_expand_x;
     job.read_expand_y = read_expand_y;

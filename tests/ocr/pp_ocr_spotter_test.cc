@@ -176,21 +176,22 @@ TEST(PpOcrSpotterModels, MissingFloorDetectorIsAnInputErrorNamingThePath) {
 // Text found in the floor view decodes against the floor's texts only: a pillar's text
 // stands upright and never shows there as text, so a floor number is not forced onto it.
 TEST_F(PpOcrSpotterTest, FloorTextDecodesAgainstTheFloorLexiconWhenGiven) {
-  const auto rig = geometry::defaultRig();
-  const auto* left = rig.find("left");
-  ASSERT_NE(left, nullptr);
-  const auto scene = testing::renderFloorText(*left, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
   SpotRequest request;
-  request.camera = left;
   request.lexicon = {"B2-117", "A023"};
   request.floor_lexicon = {"A023"};  // here B2-117 would be a pillar's text
-  auto found = spotter_->spot(scene.image, request);
+  const auto rig = geometry::defaultRig();
+  request.camera = rig.find("left");
+  ASSERT_NE(request.camera, nullptr);
+  // The same number as above, upside down beside the car.
+  const cv::Mat image =
+      testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45).image;
+  auto found = spotter_->spot(image, request);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_FALSE(found[0].lexicon_match);
   EXPECT_NE(found[0].text, "A023");
 
   request.floor_lexicon = {"B2-117", "A023"};
-  found = spotter_->spot(scene.image, request);
+  found = spotter_->spot(image, request);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_TRUE(found[0].lexicon_match);
   EXPECT_EQ(found[0].text, "B2-117");

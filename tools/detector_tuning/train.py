@@ -26,16 +26,17 @@ MEAN = np.array([0.485, 0.456, 0.406], np.float32)  # as src/ocr/ppocr/pp_ocr_ne
 STD = np.array([0.229, 0.224, 0.225], np.float32)
 
 
-def load_split(folder, limit=0):
+def load_split(folder, limit=0, in_memory=True):
+    """[(image, care quads, don't-care quads)]; with in_memory False the image is its path,
+    read when used (a few thousand views would take a dozen gigabytes)."""
     samples = []
     with open(os.path.join(folder, "index.txt")) as f:
         lines = [l.split() for l in f if l.strip()]
     if limit:
         lines = lines[:limit]
     for image_rel, label_rel, *_ in lines:
-        image = cv2.imread(os.path.join(folder, image_rel), cv2.IMREAD_COLOR)
-        if image is None:
-            raise SystemExit(f"train.py: cannot read {image_rel} in {folder}")
+        path = os.path.join(folder, image_rel)
+        image = read_view(path) if in_memory else path
         care, dont = [], []
         with open(os.path.join(folder, label_rel)) as f:
             for line in f:
@@ -46,6 +47,13 @@ def load_split(folder, limit=0):
                 (care if parts[8] == "1" else dont).append(quad)
         samples.append((image, care, dont))
     return samples
+
+
+def read_view(path):
+    image = cv2.imread(path, cv2.IMREAD_COLOR)
+    if image is None:
+        raise SystemExit(f"train.py: cannot read {path}")
+    return image
 
 
 def normalise(bgr):
@@ -166,7 +174,7 @@ def main():
     params = [net.weight(n) for n in learn]
     print(f"learning {len(learn)} tensors, {sum(p.numel() for p in params)} values", flush=True)
 
-    train = load_split(args.train)
+    train = load_split(args.train, in_memory=False)
     val = load_split(args.val)
     val = val[:: max(1, len(val) // args.val_images)][: args.val_images]
     print(f"{len(train)} train views, {len(val)} val views", flush=True)
@@ -182,8 +190,8 @@ def main():
     while time.time() - start < budget:
         batch, targets, weights = [], [], []
         for _ in range(args.batch):
-            image, care, dont = train[rng.randrange(len(train))]
-            img, c, d = augment(image, care, dont, args.crop, rng)
+            path, care, dont = train[rng.randrange(len(train))]
+            img, c, d = augment(read_view(path), care, dont, args.crop, rng)
             t, w = probability_targets((args.crop, args.crop), c, d)
             batch.append(normalise(img))
             targets.append(t)

@@ -8,10 +8,12 @@ BGR crops; the class column is not used here).
         --train /work/data/rec_train [MORE...] --val /work/data/rec_val [MORE...] \
         --out models/recognizer_tuning.npz
 
-The backbone and the SVTR neck stay as PaddleOCR trained them: their output (FEATURES) is
-computed once per crop, and only the head after it learns: the two convolutions with their
-batch-norm scale and shift (running statistics frozen) and, of the classifier, only the columns
-of the CTC blank and of --alphabet's characters; the other classes keep their weights but still
+The graph up to a cut (--features; by default the SVTR neck's output) stays as PaddleOCR
+trained it: its output is computed once per crop, and only what comes after it learns. By
+default that is the head: the two convolutions with their batch-norm scale and shift (running
+statistics frozen); --learn-from NAME with an earlier cut learns every weight from NAME on
+(e.g. the backbone's last stage and the neck). Of the classifier only the columns of the CTC
+blank and of --alphabet's characters learn; the other classes keep their weights but still
 take part in the softmax. An L2 pull toward the stock values keeps it from forgetting. The
 epoch with the best val exact match, decoding over blank + alphabet only, is written: convs and
 batch norms whole, the classifier's columns as NAME plus NAME#columns (float16 values), which
@@ -33,6 +35,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from onnx_graph import OnnxGraph  # noqa: E402
 
 FEATURES = "p2o.Concat.8"  # [N, 960, 1, T]: the neck's output, input of the head
+# The backbone's last stage starts here, [N, 240, 12, W / 4]; its first weight follows.
+LAST_STAGE_CUT, LAST_STAGE_FIRST_WEIGHT = "p2o.Add.159", "conv2d_177.w_0"
 HEAD_TENSORS = ["conv2d_145.w_0", "batch_norm2d_151.w_0", "batch_norm2d_151.b_0",
                 "conv2d_146.w_0", "batch_norm2d_152.w_0", "batch_norm2d_152.b_0"]
 CLASSIFIER = ["linear_85.w_0", "linear_85.b_0"]  # MatMul weight (120, C) and bias (C,)
@@ -106,11 +110,11 @@ def padded_width(width, extra=0):
     return max(INPUT_WIDTH, (width + extra + STEP - 1) // STEP * STEP)
 
 
-# ----- features: the frozen stock graph up to FEATURES, once per crop -----------------------
+# ----- features: the frozen stock graph up to the cut, once per crop ----------------------
 
-def extract_features(net, images, widths, batch):
-    """float16 features [960, T] of each image, input padded to its entry of `widths`; images
-    of equal width are run together."""
+def extract_features(net, images, widths, batch, cut):
+    """float16 output of the graph up to `cut` for each image (without the batch axis), input
+    padded to its entry of `widths`; images of equal width are run together."""
     features = [None] * len(images)
     by_width = {}
     for i, w in enumerate(widths):
@@ -120,7 +124,7 @@ def extract_features(net, images, widths, batch):
             for k in range(0, len(indices), batch):
                 chunk = indices[k: k + batch]
                 x = torch.from_numpy(np.stack([normalise(images[i], w) for i in chunk]))
-                y = net(x, stop=FEATURES)[:, :, 0, :].to(torch.float16)
+                y = net(x, stop=cut).to(torch.float16)
                 for i, f in zip(chunk, y):
                     features[i] = f.clone()
     return features
@@ -129,15 +133,15 @@ def extract_features(net, images, widths, batch):
 class Split:
     """Features, targets and texts of one split, with batches of equal time steps."""
 
-    def __init__(self, net, samples, class_of, extra_pad, rng, batch):
+    def __init__(self, net, samples, class_of, extra_pad, rng, batch, cut):
         self.texts = [text for _, text in samples]
         self.targets = [encode(text, class_of) for text in self.texts]
         widths = [padded_width(img.shape[1], rng.randint(0, extra_pad // STEP) * STEP)
                   for img, _ in samples]
         t0 = time.time()
-        self.features = extract_features(net, [img for img, _ in samples], widths, batch)
+        self.features = extract_features(net, [img for img, _ in samples], widths, batch, cut)
         self.extract_ms = 1000 * (time.time() - t0) / len(samples)
-        steps = [f.shape[1] for f in self.features]
+        steps = [w // STEP for w in widths]
         # CTC needs a step per label plus a blank between repeated labels.
         self.feasible = [i for i, t in enumerate(self.targets) if ctc_min_steps(t) <= steps[i]]
         self.by_steps = {}
@@ -160,7 +164,7 @@ class Split:
         return out
 
     def inputs(self, indices):
-        x = torch.stack([self.features[i] for i in indices]).float()[:, :, None, :]
+        x = torch.stack([self.features[i] for i in indices]).float()
         return x, [self.targets[i] for i in indices]
 
 
@@ -202,7 +206,7 @@ def read_text(classes, characters):
     return "".join(characters[c - 1] for c in greedy_decode(classes))
 
 
-def evaluate(net, split, logits_at, characters, columns, batch):
+def evaluate(net, split, cut, logits_at, characters, columns, batch):
     """Val exact match decoding over all classes and over `columns` only, and mean CTC loss
     (crops too narrow for their text count as misread, and are left out of the loss)."""
     right_all = right_cols = 0
@@ -210,7 +214,7 @@ def evaluate(net, split, logits_at, characters, columns, batch):
     with torch.no_grad():
         for indices in split.batches(batch):
             x, targets = split.inputs(indices)
-            logits = net(x, start=FEATURES, stop=logits_at)
+            logits = net(x, start=cut, stop=logits_at)
             loss_sum += ctc_loss(logits, targets).item() * len(indices)
             best_all = logits.argmax(-1)
             best_cols = columns[logits[..., columns].argmax(-1)]
@@ -223,16 +227,23 @@ def evaluate(net, split, logits_at, characters, columns, batch):
 
 # ----- training ---------------------------------------------------------------------------
 
-def learned_tensors(net, columns):
-    """{ONNX name: trainable tensor}; the classifier narrowed to `columns`."""
-    names = set(net.parameter_names())
-    for name in HEAD_TENSORS + CLASSIFIER:
+def learned_tensors(net, columns, learn_from):
+    """{ONNX name: trainable tensor}: the head's, or every weight from `learn_from` on; the
+    classifier narrowed to `columns`."""
+    ordered = net.parameter_names()
+    names = set(ordered)
+    whole = HEAD_TENSORS
+    if learn_from:
+        if learn_from not in names:
+            raise SystemExit(f"train.py: --learn-from {learn_from} is not a weight of the model")
+        whole = [n for n in ordered[ordered.index(learn_from):] if n not in CLASSIFIER]
+    for name in whole + CLASSIFIER:
         if name not in names:
             raise SystemExit(f"train.py: {name} is not a trainable weight of the base model")
     for name in names:
         net.weight(name).requires_grad_(False)
     learned = {}
-    for name in HEAD_TENSORS:
+    for name in whole:
         learned[name] = net.weight(name).requires_grad_(True)
     for name in CLASSIFIER:
         learned[name] = net.learn_only_columns(name, columns)
@@ -247,7 +258,7 @@ def train_epoch(net, split, logits_at, learned, stock, opt, args, rng):
     total, batches = 0.0, split.batches(args.batch, rng)
     for indices in batches:
         x, targets = split.inputs(indices)
-        loss = ctc_loss(net(x, start=FEATURES, stop=logits_at), targets)
+        loss = ctc_loss(net(x, start=args.features, stop=logits_at), targets)
         opt.zero_grad()
         (loss + args.pull * pull_to_stock(learned, stock)).backward()
         opt.step()
@@ -287,6 +298,12 @@ def main():
     ap.add_argument("--val", required=True, nargs="+", help="crop folders, one or more")
     ap.add_argument("--out", required=True)
     ap.add_argument("--alphabet", default="0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ-")
+    ap.add_argument("--features", default=FEATURES,
+                    help="graph output computed once per crop, where learning starts; "
+                         f"{LAST_STAGE_CUT} is the input of the backbone's last stage")
+    ap.add_argument("--learn-from", default="",
+                    help="first weight that learns, every later one learning too (default: "
+                         f"the head only); {LAST_STAGE_FIRST_WEIGHT} follows {LAST_STAGE_CUT}")
     ap.add_argument("--epochs", type=int, default=8)
     ap.add_argument("--lr", type=float, default=5e-4)
     ap.add_argument("--batch", type=int, default=32)
@@ -310,8 +327,9 @@ def main():
     net = OnnxGraph(args.base)
     logits_at = logits_name(net)
 
-    train = Split(net, load_split(args.train), class_of, args.extra_pad, rng, args.extract_batch)
-    val = Split(net, load_split(args.val), class_of, 0, rng, args.extract_batch)
+    train = Split(net, load_split(args.train), class_of, args.extra_pad, rng, args.extract_batch,
+                  args.features)
+    val = Split(net, load_split(args.val), class_of, 0, rng, args.extract_batch, args.features)
     for label, split in (("train", train), ("val", val)):
         print(f"{label}: {len(split)} crops, {len(split) - len(split.feasible)} too narrow for "
               f"their text, features {split.extract_ms:.1f} ms/crop", flush=True)
@@ -319,15 +337,15 @@ def main():
         if outside:
             print(f"{label}: {outside} texts have characters outside --alphabet", flush=True)
 
-    learned = learned_tensors(net, columns)
+    learned = learned_tensors(net, columns, args.learn_from)
     stock = {name: p.detach().clone() for name, p in learned.items()}
     print(f"learning {len(learned)} tensors, {sum(p.numel() for p in learned.values())} values "
           f"({len(columns)} classifier columns)", flush=True)
-    before = evaluate(net, val, logits_at, characters, columns, args.batch)
+    before = evaluate(net, val, args.features, logits_at, characters, columns, args.batch)
     report("before", *before)
     metadata = {"base": os.path.basename(args.base), "train": args.train, "val": args.val,
                 "train_crops": len(train), "val_crops": len(val), "alphabet": args.alphabet,
-                "features": FEATURES, "lr": args.lr, "pull": args.pull, "batch": args.batch,
+                "features": args.features, "learn_from": args.learn_from, "lr": args.lr, "pull": args.pull, "batch": args.batch,
                 "before": {"val_exact_all": before[0], "val_exact_alphabet": before[1],
                            "val_loss": before[2]}}
     best, best_epoch = before, 0
@@ -338,7 +356,7 @@ def main():
         t0 = time.time()
         train_loss = train_epoch(net, train, logits_at, learned, stock, opt, args, rng)
         seconds = time.time() - t0
-        result = evaluate(net, val, logits_at, characters, columns, args.batch)
+        result = evaluate(net, val, args.features, logits_at, characters, columns, args.batch)
         report(f"epoch {epoch} (train loss {train_loss:.4f}, {seconds:.1f} s)", *result)
         if result[1] > best[1]:
             best, best_epoch = result, epoch

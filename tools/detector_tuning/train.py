@@ -142,6 +142,10 @@ def save(net, names, path, metadata):
     os.replace(tmp, path)
 
 
+def checkpoint_path(out, step):
+    return f"{os.path.splitext(out)[0]}.step{step}.npz"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--base", required=True)
@@ -158,6 +162,9 @@ def main():
     ap.add_argument("--val-images", type=int, default=60)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--keep-checkpoints", action="store_true",
+                    help="also write OUT's stem + .stepN.npz at every check and at the end, to "
+                         "choose by `parkloc eval ocr` rather than by the quick check")
     args = ap.parse_args()
 
     torch.manual_seed(args.seed)
@@ -213,12 +220,18 @@ def main():
         if step % args.val_every == 0:
             r, n, fp = instance_recall(net, val)
             print(f"step {step}: val core recall {r:.3f} of {n}, false pixels {fp:.4f}", flush=True)
+            if args.keep_checkpoints:
+                save(net, learn, checkpoint_path(args.out, step),
+                     {"step": step, "val_recall": r, "val_false_px": fp})
             if r - 10 * fp > best[0]:
                 best = (r - 10 * fp, step)
                 save(net, learn, args.out, {"step": step, "val_recall": r, "val_false_px": fp})
                 print(f"saved {args.out}", flush=True)
     r, n, fp = instance_recall(net, val)
     print(f"final step {step}: val core recall {r:.3f} of {n}, false pixels {fp:.4f}", flush=True)
+    if args.keep_checkpoints:
+        save(net, learn, checkpoint_path(args.out, step),
+             {"step": step, "val_recall": r, "val_false_px": fp})
     if r - 10 * fp > best[0]:
         save(net, learn, args.out, {"step": step, "val_recall": r, "val_false_px": fp})
         best = (r - 10 * fp, step)

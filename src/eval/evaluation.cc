@@ -16,7 +16,6 @@
 #include "eval/tables.h"
 #include "io/sequence.h"
 #include "localize/oracle_source.h"
-#include "ocr/ocr_io.h"
 
 namespace parkloc::eval {
 namespace {
@@ -221,8 +220,8 @@ OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSp
         sequenceConditions(seq.metaJson(), seq.dir() + "/meta.json");
     ocr::SpotRequest request;
     if (options.use_lexicon) {
-      request.lexicon = ocr::lexiconFromMap(seq.map());
-      request.floor_lexicon = ocr::floorLexiconFromMap(seq.map());
+      request.lexicon = map::distinctTexts(seq.map());
+      request.floor_lexicon = map::distinctTexts(seq.map(), /*floor_only=*/true);
     }
     size_t frames = seq.timestamps().size();
     if (options.max_frames_per_sequence) frames = std::min(frames, options.max_frames_per_sequence);
@@ -276,8 +275,8 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     const std::vector<std::string> conditions =
         sequenceConditions(seq.metaJson(), seq.dir() + "/meta.json");
     ocr::SpotRequest full_frame;
-    full_frame.lexicon = ocr::lexiconFromMap(seq.map());
-    full_frame.floor_lexicon = ocr::floorLexiconFromMap(seq.map());
+    full_frame.lexicon = map::distinctTexts(seq.map());
+    full_frame.floor_lexicon = map::distinctTexts(seq.map(), /*floor_only=*/true);
     full_frame.second_opinions = shared_second_opinions;
     size_t frames = seq.timestamps().size();
     if (options.max_frames_per_sequence) frames = std::min(frames, options.max_frames_per_sequence);

@@ -105,4 +105,11 @@ std::vector<const Landmark*> HdMap::withinRadius(const Eigen::Vector2d& center, 
   return out;
 }
 
+std::vector<std::string> distinctTexts(const HdMap& map, bool floor_only) {
+  std::set<std::string> texts;
+  for (const Landmark& landmark : map.landmarks())
+    if (!floor_only || landmark.surface == Surface::kGround) texts.insert(landmark.text);
+  return {texts.begin(), texts.end()};
+}
+
 }  // namespace parkloc::map

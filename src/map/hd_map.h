@@ -45,4 +45,8 @@ class HdMap {
   std::unordered_map<CellKey, std::vector<size_t>> grid_;
 };
 
+// Every distinct text of the map's landmarks, sorted; with `floor_only`, only those painted
+// on the floor. Text spotting decodes against these (its lexicons).
+std::vector<std::string> distinctTexts(const HdMap& map, bool floor_only = false);
+
 }  // namespace parkloc::map

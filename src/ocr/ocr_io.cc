@@ -6,7 +6,6 @@
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <set>
 
 #include "common/error.h"
 
@@ -34,17 +33,10 @@ std::vector<std::string> loadLexiconFile(const std::string& path) {
   return out;
 }
 
-std::vector<std::string> lexiconFromMap(const map::HdMap& map) {
-  std::set<std::string> texts;
-  for (const auto& landmark : map.landmarks()) texts.insert(landmark.text);
-  return {texts.begin(), texts.end()};
-}
+std::vector<std::string> lexiconFromMap(const map::HdMap& map) { return map::distinctTexts(map); }
 
 std::vector<std::string> floorLexiconFromMap(const map::HdMap& map) {
-  std::set<std::string> texts;
-  for (const auto& landmark : map.landmarks())
-    if (landmark.surface == map::Surface::kGround) texts.insert(landmark.text);
-  return {texts.begin(), texts.end()};
+  return map::distinctTexts(map, /*floor_only=*/true);
 }
 
 nlohmann::json toJson(const TextInstance& inst) {

@@ -81,6 +81,18 @@ TEST(HdMapTest, FindByTextAndIdEqualBruteForce) {
   EXPECT_EQ(m.findById("nope"), nullptr);
 }
 
+TEST(HdMapTest, DistinctTextsAreSortedOnceEachAndFloorOnlyLeavesPillarsOut) {
+  Landmark pillar = number("P1", "B1", "B1", 5.0, 0.0);
+  pillar.cls = TextClass::kPillar;
+  pillar.surface = Surface::kVertical;
+  const HdMap map({number("N2", "B1-102", "B1", 0.0, 0.0), pillar,
+                   number("N1", "B1-101", "B1", 2.0, 0.0), number("N3", "B1-101", "B2", 2.0, 0.0)},
+                  "texts");
+  EXPECT_EQ(distinctTexts(map), (std::vector<std::string>{"B1", "B1-101", "B1-102"}));
+  EXPECT_EQ(distinctTexts(map, /*floor_only=*/true),
+            (std::vector<std::string>{"B1-101", "B1-102"}));
+}
+
 TEST(HdMapTest, ValidateRejectsDuplicateId) {
   EXPECT_EQ(HdMap::validate({number("a", "1", "B1", 0, 0), number("a", "2", "B1", 1, 0)}),
             "duplicate id 'a'");

@@ -10,6 +10,7 @@
 #include "geometry/rig.h"
 #include "io/calibration_yaml.h"
 #include "io/map_geojson.h"
+#include "map/hd_map.h"
 #include "ocr/ocr_io.h"
 #include "ocr/ppocr/pp_ocr_spotter.h"
 
@@ -54,8 +55,8 @@ void run(const OcrArgs& args) {
   if (!args.lexicon.empty()) request.lexicon = ocr::loadLexiconFile(args.lexicon);
   if (!args.map.empty()) {
     const map::HdMap map = io::loadMap(args.map);
-    request.lexicon = ocr::lexiconFromMap(map);
-    request.floor_lexicon = ocr::floorLexiconFromMap(map);
+    request.lexicon = map::distinctTexts(map);
+    request.floor_lexicon = map::distinctTexts(map, /*floor_only=*/true);
   }
   request.camera = camera;
   ocr::PpOcrSpotter spotter(options);

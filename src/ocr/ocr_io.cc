@@ -33,12 +33,6 @@ std::vector<std::string> loadLexiconFile(const std::string& path) {
   return out;
 }
 
-std::vector<std::string> lexiconFromMap(const map::HdMap& map) { return map::distinctTexts(map); }
-
-std::vector<std::string> floorLexiconFromMap(const map::HdMap& map) {
-  return map::distinctTexts(map, /*floor_only=*/true);
-}
-
 nlohmann::json toJson(const TextInstance& inst) {
   nlohmann::json polygon = nlohmann::json::array();
   for (const auto& p : inst.polygon) polygon.push_back({p.x, p.y});

@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "map/hd_map.h"
 #include "ocr/text_spotter.h"
 
 namespace parkloc::ocr {
@@ -17,10 +16,6 @@ cv::Mat readImage(const std::string& path);
 
 // One candidate text a line; blank lines and surrounding spaces ignored. Throws IoError.
 std::vector<std::string> loadLexiconFile(const std::string& path);
-// Every distinct text of the map's landmarks.
-std::vector<std::string> lexiconFromMap(const map::HdMap& map);
-// Every distinct text painted on the floor (SpotRequest::floor_lexicon).
-std::vector<std::string> floorLexiconFromMap(const map::HdMap& map);
 
 nlohmann::json toJson(const TextInstance& instance);
 nlohmann::json toJson(const std::vector<TextInstance>& instances);

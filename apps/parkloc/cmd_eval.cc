@@ -2,6 +2,7 @@
 // parkloc eval ocr DATASET  : table 3 only (text spotting), printed and as JSON.
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -13,6 +14,7 @@
 #include "eval/report.h"
 #include "eval/tables.h"
 #include "eval/text_outcomes.h"
+#include "io/tum.h"
 
 namespace {
 
@@ -24,6 +26,8 @@ struct EvalArgs {
   std::string out = "parkloc-eval";
   std::string json;
   std::string outcomes;
+  std::string poses;
+  double placement_radius = ocr::SpotRequest{}.placement_radius_m;
   int max_frames = 0;
   bool no_paper = false;
   bool no_oracle = false;
@@ -43,6 +47,12 @@ void runEvalOcr(const EvalArgs& a) {
   options.use_lexicon = !a.no_lexicon;
   options.metrics.inside_image_only = !a.whole_polygons;
   options.progress = [&](const eval::Progress& p) { progress(p); };
+  options.placement_radius_m = a.placement_radius;
+  if (!a.poses.empty())  // DIR/<drive>/trajectory.tum, as `parkloc run --out DIR/<drive>` writes
+    for (const std::string& sequence : sequences) {
+      const std::string name = std::filesystem::path(sequence).filename().string();
+      options.estimated_poses[name] = io::loadTum(a.poses + "/" + name + "/trajectory.tum");
+    }
   std::ofstream outcomes;
   if (!a.outcomes.empty()) {
     outcomes.open(a.outcomes);
@@ -138,6 +148,15 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   ocr_cmd->add_option("--max-frames", ocr_args->max_frames, "At most N frame sets per sequence")
       ->check(CLI::NonNegativeNumber);
   ocr_cmd->add_flag("--no-lexicon", ocr_args->no_lexicon, "Free reading only");
+  ocr_cmd->add_option("--poses", ocr_args->poses,
+                      "Folder of localization runs (DIR/<drive>/trajectory.tum, as parkloc run "
+                      "writes): floor boxes decode against the texts placed near them under the "
+                      "pose predicted from the estimate before each frame set");
+  ocr_cmd
+      ->add_option("--placement-radius", ocr_args->placement_radius,
+                   "With --poses: metres from a box's centre within which a map text may be it")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   ocr_cmd->add_flag("--whole-polygons", ocr_args->whole_polygons,
                     "Match whole label polygons, not only their parts inside the image (as "
                     "until session 7)");

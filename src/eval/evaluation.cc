@@ -13,6 +13,7 @@
 #include "eval/conditions.h"
 #include "eval/dataset.h"
 #include "eval/dead_reckoning.h"
+#include "eval/pose_prediction.h"
 #include "eval/tables.h"
 #include "io/sequence.h"
 #include "localize/oracle_source.h"
@@ -227,7 +228,18 @@ OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSp
     if (options.max_frames_per_sequence) frames = std::min(frames, options.max_frames_per_sequence);
     const std::string name = std::filesystem::path(seq.dir()).filename().string();
     const std::string stage = fmt::format("sequence {}/{} {}", s + 1, sequences.size(), name);
+    std::optional<PosePrediction> prediction;
+    if (const auto it = options.estimated_poses.find(name);
+        options.use_lexicon && it != options.estimated_poses.end())
+      prediction.emplace(it->second, seq.odometry());
+    const std::string level = sequenceLevel(seq.metaJson());
+    request.placement_radius_m = options.placement_radius_m;
     for (size_t i = 0; i < frames; ++i) {
+      request.placed_floor_texts.clear();
+      if (prediction)
+        if (const auto pose = prediction->at(seq.timestamps()[i]))
+          request.placed_floor_texts =
+              map::placeFloorTexts(seq.map(), *pose, options.placement_range_m, level);
       for (const std::string& camera : seq.cameras()) {
         const std::optional<io::ImageLabels> labels = seq.loadLabels(i, camera);
         if (!labels) continue;  // no ground truth: nothing to score

@@ -4,11 +4,13 @@
 // configurations in lockstep; full-frame OCR runs once per image and its instances are
 // shared by the eight paper-pipeline variants of the ablation (Table 10).
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "eval/ocr_metrics.h"
 #include "eval/report.h"
+#include "io/tum.h"
 #include "localize/pipeline.h"
 #include "ocr/text_spotter.h"
 
@@ -25,6 +27,14 @@ struct OcrRunOptions {
   OcrEvaluationOptions metrics;
   size_t max_frames_per_sequence = 0;  // 0: all
   bool use_lexicon = true;             // decode against the map's texts
+  // A localization run's estimated poses per drive (its folder name; `parkloc run`'s
+  // trajectory.tum): each frame set's floor boxes then decode against the texts the map
+  // places near them under the pose predicted from the estimate before it
+  // (eval/pose_prediction.h, map/placed_texts.h). Drives without one, and frame sets with no
+  // recent estimate before them, decode against the whole lexicon as without.
+  std::map<std::string, std::vector<io::StampedPose>> estimated_poses;
+  double placement_range_m = 15.0;  // texts placed around the vehicle (the floor views' reach)
+  double placement_radius_m = 1.0;  // ocr::SpotRequest::placement_radius_m
   ProgressCallback progress;
   // Called with every scored image: the drive's folder name, its labels and what the
   // spotter found (for per-instance outcomes, eval/text_outcomes.h).

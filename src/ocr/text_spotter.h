@@ -9,6 +9,7 @@
 
 #include "geometry/rig.h"
 #include "map/landmark.h"
+#include "map/placed_texts.h"
 
 namespace parkloc::ocr {
 
@@ -57,6 +58,14 @@ struct SpotRequest {
   // bird's-eye view of the floor decodes against these instead, since upright text (pillars)
   // never shows there as text. Empty: such boxes decode against `lexicon` too.
   std::vector<std::string> floor_lexicon;
+  // The floor texts around the vehicle under a predicted pose (map/placed_texts.h; added
+  // later): a box found in the floor view then decodes against those placed within
+  // `placement_radius_m` of its centre instead of all of `floor_lexicon` (none near: a free
+  // reading). Needs `camera`. Empty: no placement, as before.
+  std::vector<map::PlacedText> placed_floor_texts;
+  // Half a bay: the centre of a box and of its text differ by the pose's error and, for a
+  // number cut by the image border, by up to half its length.
+  double placement_radius_m = 1.0;
   // When non-empty, spot only inside these regions instead of the full frame.
   std::vector<RegionOfInterest> regions;
   // The camera that took the image, when known (not owned): engines may use its

@@ -197,6 +197,30 @@ TEST_F(PpOcrSpotterTest, FloorTextDecodesAgainstTheFloorLexiconWhenGiven) {
   EXPECT_EQ(found[0].text, "B2-117");
 }
 
+// Under a predicted pose a floor box decodes against the texts placed near it only: with
+// its own text placed a bay away and another placed where it is painted, the number matches
+// nothing (nor is forced onto the other); placed where it is painted, it matches.
+TEST_F(PpOcrSpotterTest, FloorTextDecodesAgainstTheTextsPlacedNearItUnderAPredictedPose) {
+  SpotRequest request;
+  request.lexicon = request.floor_lexicon = {"B2-117", "A023"};
+  const auto rig = geometry::defaultRig();
+  request.camera = rig.find("left");
+  ASSERT_NE(request.camera, nullptr);
+  const cv::Mat image =
+      testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45).image;
+  request.placed_floor_texts = {{"B2-117", {2.0, 5.1}}, {"A023", {2.0, 2.6}}};
+  auto found = spotter_->spot(image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_FALSE(found[0].lexicon_match);
+  EXPECT_NE(found[0].text, "A023");
+
+  request.placed_floor_texts = {{"A023", {2.0, 5.1}}, {"B2-117", {2.1, 2.5}}};
+  found = spotter_->spot(image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_EQ(found[0].text, "B2-117");
+}
+
 struct LeftFloorSpot {
   std::vector<TextInstance> found;
   Quad truth;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 
@@ -66,6 +67,9 @@ struct ReadJob {
   Quad quad;
   float detection_score = 0.f;
   const std::vector<std::string>* lexicon = nullptr;
+  // The texts whose characters a free reading may use: `lexicon`, or the whole floor
+  // lexicon when `lexicon` is the part of it placed near the box. Null: `lexicon`.
+  const std::vector<std::string>* reading_lexicon = nullptr;
   bool try_both_directions = true;
   // The detector is sure of this box: it is reported even when its reading is not
   // (text empty, raw_text the greedy reading).
@@ -195,8 +199,10 @@ std::vector<std::optional<TextInstance>> readJobs(
     for (size_t k = 0; k < outputs.size(); ++k) {
       const auto [job, turned] = batch.owner[k];
       const auto& lexicon = jobs[job].lexicon ? *jobs[job].lexicon : kNoLexicon;
+      const auto* reading_lexicon =
+          jobs[job].reading_lexicon ? jobs[job].reading_lexicon : jobs[job].lexicon;
       LexiconDecoding d = decodeWithLexicon(outputs[k].matrix(), charset, lexicon, options.lexicon,
-                                            readingClasses(jobs[job].lexicon));
+                                            readingClasses(reading_lexicon));
       if (second_opinion && !d.matched) continue;
       // Both directions share the crop's step count, so their log probabilities compare;
       // a lexicon match beats a free reading.
@@ -304,6 +310,13 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     }
     boxes = std::move(first);
   }
+  // Under a predicted pose each floor box decodes against the texts placed near it; the
+  // jobs point into `placed_lexicons`.
+  const GroundView* placing = role == DetectorRole::kFloorView && request.camera != nullptr &&
+                                      !request.placed_floor_texts.empty()
+                                  ? &groundView(*request.camera)
+                                  : nullptr;
+  std::deque<std::vector<std::string>> placed_lexicons;
   std::vector<ReadJob> jobs;
   for (const DbBox& box : boxes) {
     ReadJob job;
@@ -312,6 +325,13 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     job.lexicon = role == DetectorRole::kFloorView && !request.floor_lexicon.empty()
                       ? &request.floor_lexicon
                       : &request.lexicon;
+    if (placing != nullptr) {
+      const cv::Point2f centre = (box.quad[0] + box.quad[1] + box.quad[2] + box.quad[3]) * 0.25f;
+      placed_lexicons.push_back(map::textsNear(
+          request.placed_floor_texts, placing->groundFromView(centre), request.placement_radius_m));
+      job.reading_lexicon = job.lexicon;
+      job.lexicon = &placed_lexicons.back();
+    }
     job.keep_unread = role == DetectorRole::kFloorView && box.score >= options_.confident_box_score;
     job.read_expand_x = read_expand_x;
     job.read_expand_y = read_expand_y;

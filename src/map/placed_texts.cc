@@ -1,0 +1,34 @@
+#include "map/placed_texts.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace parkloc::map {
+
+std::vector<PlacedText> placeFloorTexts(const HdMap& map, const geometry::Pose2& map_from_vehicle,
+                                        double radius, const std::string& level) {
+  const geometry::Pose2 vehicle_from_map = map_from_vehicle.inverse();
+  std::vector<PlacedText> placed;
+  for (const Landmark* l : map.withinRadius(map_from_vehicle.translation(), radius, level)) {
+    if (l->surface != Surface::kGround) continue;
+    placed.push_back({l->text, vehicle_from_map * Eigen::Vector2d(l->position.head<2>())});
+  }
+  return placed;
+}
+
+std::vector<std::string> textsNear(const std::vector<PlacedText>& placed,
+                                   const Eigen::Vector2d& vehicle_xy, double radius) {
+  std::vector<std::pair<double, const std::string*>> near;
+  for (const PlacedText& p : placed) {
+    const double d = (p.vehicle_xy - vehicle_xy).norm();
+    if (d <= radius) near.emplace_back(d, &p.text);
+  }
+  std::stable_sort(near.begin(), near.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> texts;
+  for (const auto& [d, text] : near)
+    if (std::find(texts.begin(), texts.end(), *text) == texts.end()) texts.push_back(*text);
+  return texts;
+}
+
+}  // namespace parkloc::map

@@ -1,0 +1,64 @@
+#include "map/placed_texts.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace parkloc::map {
+namespace {
+
+Landmark text(const std::string& id, const std::string& content, const std::string& level, double x,
+              double y, Surface surface = Surface::kGround) {
+  Landmark l;
+  l.id = id;
+  l.text = content;
+  l.level = level;
+  l.position = {x, y, surface == Surface::kGround ? 0.0 : 1.5};
+  l.width = 1.0;
+  l.height = 0.5;
+  l.surface = surface;
+  if (surface == Surface::kVertical) {
+    l.cls = TextClass::kPillar;
+    l.normal = Eigen::Vector3d::UnitX();
+    l.heading = M_PI / 2;
+  }
+  return l;
+}
+
+// A vehicle at (10, 5) heading north (+y): a text 3 m north of it lies 3 m ahead (+x in the
+// vehicle frame), one 2 m east of it 2 m to its right (-y).
+TEST(PlaceFloorTexts, PutsTheFloorTextsOfTheLevelAroundTheVehicleInItsFrame) {
+  const HdMap m({text("a", "A001", "B1", 10.0, 8.0), text("b", "A002", "B1", 12.0, 5.0),
+                 text("c", "A001", "B2", 10.0, 8.0),
+                 text("p", "B1", "B1", 10.0, 6.0, Surface::kVertical),
+                 text("far", "A009", "B1", 30.0, 5.0)});
+  const geometry::Pose2 map_from_vehicle(10.0, 5.0, M_PI / 2);
+  const auto placed = placeFloorTexts(m, map_from_vehicle, 10.0, "B1");
+  ASSERT_EQ(placed.size(), 2u);  // not B2's, not the pillar's, not the one 20 m away
+  for (const PlacedText& p : placed) {
+    if (p.text == "A001") {
+      EXPECT_NEAR(p.vehicle_xy.x(), 3.0, 1e-9);
+      EXPECT_NEAR(p.vehicle_xy.y(), 0.0, 1e-9);
+    } else {
+      EXPECT_EQ(p.text, "A002");
+      EXPECT_NEAR(p.vehicle_xy.x(), 0.0, 1e-9);
+      EXPECT_NEAR(p.vehicle_xy.y(), -2.0, 1e-9);
+    }
+  }
+  EXPECT_EQ(placeFloorTexts(m, map_from_vehicle, 10.0, "").size(), 3u);  // every level
+}
+
+TEST(TextsNear, KeepsThoseWithinTheRadiusOnceEachNearestFirst) {
+  const std::vector<PlacedText> placed = {{"C003", {3.0, 0.0}},
+                                          {"C001", {0.5, 0.0}},
+                                          {"C002", {0.0, 0.9}},
+                                          {"C001", {0.2, 0.0}},
+                                          {"C004", {1.0, 1.0}}};
+  EXPECT_EQ(textsNear(placed, {0.0, 0.0}, 1.0), (std::vector<std::string>{"C001", "C002"}));
+  EXPECT_EQ(textsNear(placed, {0.0, 0.0}, 1.5), (std::vector<std::string>{"C001", "C002", "C004"}));
+  EXPECT_TRUE(textsNear(placed, {-5.0, 0.0}, 1.0).empty());
+  EXPECT_TRUE(textsNear({}, {0.0, 0.0}, 1.0).empty());
+}
+
+}  // namespace
+}  // namespace parkloc::map

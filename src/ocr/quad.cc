@@ -31,6 +31,8 @@ float quadHeight(const Quad& q) {
   return 0.5f * static_cast<float>(cv::norm(q[3] - q[0]) + cv::norm(q[2] - q[1]));
 }
 
+cv::Point2f quadCentre(const Quad& q) { return (q[0] + q[1] + q[2] + q[3]) * 0.25f; }
+
 Quad expandQuad(const Quad& q, float ratio_x, float ratio_y) {
   const cv::Point2f unit[4] = {{0.f, 0.f}, {1.f, 0.f}, {1.f, 1.f}, {0.f, 1.f}};
   const cv::Mat unit_from_quad = cv::getPerspectiveTransform(q.data(), unit);

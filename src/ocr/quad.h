@@ -19,6 +19,9 @@ Quad shiftedBy180(const Quad& quad);
 float quadWidth(const Quad& quad);
 float quadHeight(const Quad& quad);
 
+// The mean of the four corners.
+cv::Point2f quadCentre(const Quad& quad);
+
 // Scales the quad about its centre by `ratio_x` along the reading direction and `ratio_y`
 // across it, in the quad's own perspective (through its rectifying homography), so the
 // paper's "box expanded by ratio 2" is expandQuad(q, 2, 2).

@@ -71,7 +71,7 @@ cv::Mat classifierFeatures(const cv::Mat& image, const Quad& quad, const std::st
 
   // Geometry: text height and aspect, where the box sits in the image, its tilt.
   const float w = quadWidth(quad), h = std::max(quadHeight(quad), 1.f);
-  const cv::Point2f centre = (quad[0] + quad[1] + quad[2] + quad[3]) * 0.25f;
+  const cv::Point2f centre = quadCentre(quad);
   const cv::Point2f along = quad[1] - quad[0];
   values.push_back(std::log(h) / 5.f);
   values.push_back(std::log(std::max(w / h, 0.1f)));

@@ -39,6 +39,14 @@ TEST(Quad, ExpandScalesAboutTheCentreAlongEachAxis) {
   EXPECT_NEAR(e[0].y, 10, 1e-3);
 }
 
+TEST(Quad, CentreIsTheMeanOfTheCorners) {
+  const Quad q = {cv::Point2f(0.f, 0.f), cv::Point2f(8.f, 2.f), cv::Point2f(10.f, 6.f),
+                  cv::Point2f(2.f, 4.f)};
+  const cv::Point2f c = quadCentre(q);
+  EXPECT_FLOAT_EQ(c.x, 5.f);
+  EXPECT_FLOAT_EQ(c.y, 3.f);
+}
+
 TEST(Quad, RectifiedCropMapsCornersToTheCropEdges) {
   // A bright dot at the quad's top-left corner lands in the crop's top-left pixel.
   cv::Mat image(100, 100, CV_8UC3, cv::Scalar::all(0));

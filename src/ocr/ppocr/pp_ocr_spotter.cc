@@ -326,7 +326,7 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                       ? &request.floor_lexicon
                       : &request.lexicon;
     if (placing != nullptr) {
-      const cv::Point2f centre = (box.quad[0] + box.quad[1] + box.quad[2] + box.quad[3]) * 0.25f;
+      const cv::Point2f centre = quadCentre(box.quad);
       placed_lexicons.push_back(map::textsNear(
           request.placed_floor_texts, placing->groundFromView(centre), request.placement_radius_m));
       job.reading_lexicon = job.lexicon;
@@ -388,8 +388,7 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
   auto addUnseen = [&](std::vector<TextInstance> found) {
     const size_t found_before = out.size();
     for (TextInstance& inst : found) {
-      const cv::Point2f c =
-          (inst.polygon[0] + inst.polygon[1] + inst.polygon[2] + inst.polygon[3]) * 0.25f;
+      const cv::Point2f c = quadCentre(inst.polygon);
       bool seen = false;
       for (size_t i = 0; i < found_before && !seen; ++i) seen = contains(out[i].polygon, c);
       if (!seen) out.push_back(std::move(inst));
@@ -493,7 +492,7 @@ std::vector<TextInstance> PpOcrSpotter::readRegions(const cv::Mat& image,
     std::optional<DbBox> chosen;
     float chosen_cost = 0.f;
     for (const DbBox& box : dbBoxesFromProbability(maps[k], options_.db)) {
-      const cv::Point2f c = (box.quad[0] + box.quad[1] + box.quad[2] + box.quad[3]) * 0.25f;
+      const cv::Point2f c = quadCentre(box.quad);
       const float dx = (c.x - centre.x) / std::max(tw, 1.f),
                   dy = (c.y - centre.y) / std::max(th, 1.f);
       const float cost = dx * dx + dy * dy;

@@ -22,6 +22,7 @@ struct RunArgs {
   bool no_afm = false, no_mcrp = false, no_mcap = false, no_odometry = false;
   bool no_map_guided = false;
   bool second_opinions = false;
+  bool no_sweep_placement = false;
   int full_frame_interval = parkloc::localize::PipelineOptions{}.full_frame_interval;
   int reread_interval = parkloc::localize::PipelineOptions{}.reread_interval_frames;
   int max_reads = parkloc::localize::PipelineOptions{}.max_reads_per_frame;
@@ -50,6 +51,7 @@ void run(const RunArgs& a) {
     options.pipeline.reread_interval_frames = a.reread_interval;
     options.pipeline.max_reads_per_frame = a.max_reads;
     options.pipeline.sweep_detection_scale = a.sweep_scale;
+    options.pipeline.sweep_places_floor_texts = !a.no_sweep_placement;
     options.pipeline.search_cameras_per_frame = a.search_cameras;
     options.pipeline.second_opinions = a.second_opinions;
   }
@@ -142,6 +144,9 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
                   "While tracking, the full-frame sweep's detector input is scaled by this")
       ->check(CLI::Range(0.25, 1.0))
       ->capture_default_str();
+  cmd->add_flag("--no-sweep-placement", args->no_sweep_placement,
+                "While tracking, the sweep reads floor boxes both ways round, not only the way "
+                "the floor texts the pose places near them read");
   cmd->add_option("--search-cameras", args->search_cameras,
                   "Cameras spotted on the full frame per frame set before the first fix, in "
                   "turn (0: all; a lost track always spots all)")

@@ -22,6 +22,7 @@
 #include "localize/region_budget.h"
 #include "localize/roi_prediction.h"
 #include "localize/search_window.h"
+#include "map/placed_texts.h"
 
 namespace parkloc::localize {
 namespace {
@@ -799,6 +800,13 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
         if (is_tracking && options.reread_interval_frames > 0) {
           request.max_reads = std::max(0, options.max_reads_per_frame);
           request.detection_scale = static_cast<float>(options.sweep_detection_scale);
+          if (options.sweep_places_floor_texts) {
+            request.placed_floor_texts =
+                map::placeFloorTexts(map, ekf.pose(), options.sweep_placement_range_m,
+                                     options.level.empty() ? active_level : options.level);
+            request.placement_radius_m = options.sweep_placement_radius_m;
+            request.placed_texts_narrow_the_lexicon = false;
+          }
         } else if (searching) {
           request.max_reads = std::max(0, options.search_max_reads);
           request.detection_scale = static_cast<float>(options.search_detection_scale);

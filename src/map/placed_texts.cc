@@ -1,6 +1,7 @@
 #include "map/placed_texts.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace parkloc::map {
@@ -11,7 +12,9 @@ std::vector<PlacedText> placeFloorTexts(const HdMap& map, const geometry::Pose2&
   std::vector<PlacedText> placed;
   for (const Landmark* l : map.withinRadius(map_from_vehicle.translation(), radius, level)) {
     if (l->surface != Surface::kGround) continue;
-    placed.push_back({l->text, vehicle_from_map * Eigen::Vector2d(l->position.head<2>())});
+    const Eigen::Vector2d reading_in_map = l->readingDirection().head<2>();
+    placed.push_back({l->text, vehicle_from_map * Eigen::Vector2d(l->position.head<2>()),
+                      vehicle_from_map.rotation() * reading_in_map});
   }
   return placed;
 }
@@ -29,6 +32,27 @@ std::vector<std::string> textsNear(const std::vector<PlacedText>& placed,
   for (const auto& [d, text] : near)
     if (std::find(texts.begin(), texts.end(), *text) == texts.end()) texts.push_back(*text);
   return texts;
+}
+
+std::optional<Eigen::Vector2d> readingDirectionNear(const std::vector<PlacedText>& placed,
+                                                    const Eigen::Vector2d& vehicle_xy,
+                                                    double radius, double max_angle) {
+  const PlacedText* nearest = nullptr;
+  double nearest_distance = radius;
+  for (const PlacedText& p : placed) {
+    const double d = (p.vehicle_xy - vehicle_xy).norm();
+    if (d <= nearest_distance) {
+      nearest = &p;
+      nearest_distance = d;
+    }
+  }
+  if (nearest == nullptr) return std::nullopt;
+  const double min_cos = std::cos(max_angle);
+  for (const PlacedText& p : placed)
+    if ((p.vehicle_xy - vehicle_xy).norm() <= radius &&
+        p.reading.normalized().dot(nearest->reading.normalized()) < min_cos)
+      return std::nullopt;
+  return nearest->reading.normalized();
 }
 
 }  // namespace parkloc::map

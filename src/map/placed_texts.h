@@ -5,6 +5,7 @@
 // text of the garage, which the recognizer would otherwise confuse across the garage (D007
 // read as D002, five bays away). The "lexicon of the texts near a predicted pose".
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,10 +14,12 @@
 
 namespace parkloc::map {
 
-// A map text and where its centre lies on the floor, in the vehicle frame (metres).
+// A map text, where its centre lies on the floor and which way it reads, in the vehicle frame
+// (metres; a unit vector).
 struct PlacedText {
   std::string text;
   Eigen::Vector2d vehicle_xy = Eigen::Vector2d::Zero();
+  Eigen::Vector2d reading = Eigen::Vector2d::UnitX();
 };
 
 // The texts painted on the floor of `level` (every level when empty) whose centre lies within
@@ -27,5 +30,13 @@ std::vector<PlacedText> placeFloorTexts(const HdMap& map, const geometry::Pose2&
 // The texts placed within `radius` metres of `vehicle_xy`, each once, nearest first.
 std::vector<std::string> textsNear(const std::vector<PlacedText>& placed,
                                    const Eigen::Vector2d& vehicle_xy, double radius);
+
+// The way the texts placed within `radius` metres of `vehicle_xy` read, when there are some and
+// they all read within `max_angle` radians of the nearest one (its direction); empty otherwise.
+// A box found there can then be read that way round only: the two bays facing each other across
+// an aisle read opposite ways, but lie an aisle apart.
+std::optional<Eigen::Vector2d> readingDirectionNear(const std::vector<PlacedText>& placed,
+                                                    const Eigen::Vector2d& vehicle_xy,
+                                                    double radius, double max_angle);
 
 }  // namespace parkloc::map

@@ -24,6 +24,15 @@ Quad quadFromRotatedRect(const cv::RotatedRect& rect) {
 
 Quad shiftedBy180(const Quad& quad) { return {quad[2], quad[3], quad[0], quad[1]}; }
 
+std::optional<Quad> orientedAlong(const Quad& quad, const cv::Point2f& reading, double max_angle) {
+  const cv::Point2f along = 0.5f * (quad[1] + quad[2]) - 0.5f * (quad[0] + quad[3]);
+  const double lengths = cv::norm(along) * cv::norm(reading);
+  if (!(lengths > 0.0)) return std::nullopt;
+  const double cos_angle = along.dot(reading) / lengths;
+  if (std::abs(cos_angle) < std::cos(max_angle)) return std::nullopt;
+  return cos_angle >= 0.0 ? quad : shiftedBy180(quad);
+}
+
 float quadWidth(const Quad& q) {
   return 0.5f * static_cast<float>(cv::norm(q[1] - q[0]) + cv::norm(q[2] - q[3]));
 }

@@ -2,6 +2,7 @@
 // Text quadrilaterals: corner order and perspective-rectified crops.
 #include <array>
 #include <opencv2/core.hpp>
+#include <optional>
 
 namespace parkloc::ocr {
 
@@ -14,6 +15,11 @@ Quad quadFromRotatedRect(const cv::RotatedRect& rect);
 
 // The same quad read the other way round (TL <-> BR, TR <-> BL).
 Quad shiftedBy180(const Quad& quad);
+
+// The quad or its 180 degree turn, whichever reads along `reading` (an image direction), when
+// its reading axis lies within `max_angle` radians of that direction's axis; empty when it does
+// not (a box whose long side runs across the text), so that it is read both ways round.
+std::optional<Quad> orientedAlong(const Quad& quad, const cv::Point2f& reading, double max_angle);
 
 // Reading width (mean of top and bottom edges) and height (mean of left and right edges).
 float quadWidth(const Quad& quad);

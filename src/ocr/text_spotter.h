@@ -61,11 +61,17 @@ struct SpotRequest {
   // The floor texts around the vehicle under a predicted pose (map/placed_texts.h; added
   // later): a box found in the floor view then decodes against those placed within
   // `placement_radius_m` of its centre instead of all of `floor_lexicon` (none near: a free
-  // reading). Needs `camera`. Empty: no placement, as before.
+  // reading), and is read only the way round they read (when they agree and the box lies along
+  // them; PpOcrOptions::placed_reading_max_angle). Needs `camera`. Empty: no placement, as
+  // before.
   std::vector<map::PlacedText> placed_floor_texts;
   // Half a bay: the centre of a box and of its text differ by the pose's error and, for a
   // number cut by the image border, by up to half its length.
   double placement_radius_m = 1.0;
+  // True: such a box decodes against the texts placed near it. False: against all of
+  // `floor_lexicon` as without placement, the texts placed near it saying only which way
+  // round it reads (PpOcrOptions::placed_reading_max_angle).
+  bool placed_texts_narrow_the_lexicon = true;
   // When non-empty, spot only inside these regions instead of the full frame.
   std::vector<RegionOfInterest> regions;
   // The camera that took the image, when known (not owned): engines may use its

@@ -21,6 +21,8 @@ class RecordingSpotter : public ocr::TextSpotter {
     auto all = testing::spotExactly(*request.camera, map_, pose, {});
     if (request.regions.empty()) {
       for (const auto& t : all) read_now.insert(t.text);
+      full_frames.push_back(request);
+      full_frames.back().camera = nullptr;  // the pipeline's, gone after the call
       return all;
     }
     std::vector<ocr::TextInstance> out;
@@ -38,6 +40,7 @@ class RecordingSpotter : public ocr::TextSpotter {
   geometry::Pose2 pose;
   std::set<std::string> read_now, fitted_now;
   int reads_asked = 0;
+  std::vector<ocr::SpotRequest> full_frames;  // every full-frame request, in order
 
  private:
   const map::HdMap& map_;
@@ -76,6 +79,51 @@ TEST(TrackedReading, ReadsAFewTextsPerFrameFitsTheRestAndKeepsThePose) {
     fitted_total += static_cast<int>(spotter.fitted_now.size());
   }
   EXPECT_GT(fitted_total, 100);  // most measurements come from fits
+}
+
+// While tracking, a full-frame sweep is told where the map's floor texts lie around the
+// tracked pose and which way they read (for the way round to read each box), but keeps the
+// whole floor lexicon; a search before the first fix is told nothing.
+TEST(TrackedReading, TheTrackingSweepGetsTheFloorTextsPlacedAroundThePose) {
+  const geometry::Rig rig = geometry::defaultRig();
+  const map::HdMap map = testing::aisleMap();
+  for (const bool place : {true, false}) {
+    RecordingSpotter spotter(map);
+    PipelineOptions options;
+    options.full_frame_interval = 8;
+    options.sweep_places_floor_texts = place;
+    Pipeline pipeline(rig, map, options, &spotter);
+    int sweeps = 0;
+    for (int k = 0; k < 20; ++k) {
+      spotter.pose = geometry::Pose2(0.15 * k, 0.1, 0.0);
+      spotter.full_frames.clear();
+      const FrameResult r = pipeline.process(testing::placeholderFrame(rig, k / 10.0, 1.5));
+      ASSERT_TRUE(r.has_pose) << "frame " << k;
+      for (const ocr::SpotRequest& request : spotter.full_frames) {
+        if (k == 0 || !place) {
+          EXPECT_TRUE(request.placed_floor_texts.empty()) << "frame " << k;
+          continue;
+        }
+        ++sweeps;
+        EXPECT_FALSE(request.placed_texts_narrow_the_lexicon);
+        EXPECT_FALSE(request.floor_lexicon.empty());
+        ASSERT_FALSE(request.placed_floor_texts.empty()) << "frame " << k;
+        for (const map::PlacedText& placed : request.placed_floor_texts) {
+          const map::Landmark* l = nullptr;
+          for (const map::Landmark& m : map.landmarks())
+            if (m.text == placed.text) l = &m;
+          ASSERT_NE(l, nullptr) << placed.text;
+          EXPECT_EQ(l->surface, map::Surface::kGround) << placed.text;
+          const Eigen::Vector2d truth = spotter.pose.inverse() * l->position.head<2>().eval();
+          EXPECT_LT((placed.vehicle_xy - truth).norm(), 0.05) << placed.text << " frame " << k;
+          EXPECT_NEAR(placed.reading.y(), l->readingDirection().y(), 0.05) << placed.text;
+        }
+      }
+    }
+    if (place) {
+      EXPECT_GT(sweeps, 0);
+    }
+  }
 }
 
 TEST(TrackedReading, OffReadsEveryRegion) {

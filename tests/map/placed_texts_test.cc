@@ -36,6 +36,9 @@ TEST(PlaceFloorTexts, PutsTheFloorTextsOfTheLevelAroundTheVehicleInItsFrame) {
   const auto placed = placeFloorTexts(m, map_from_vehicle, 10.0, "B1");
   ASSERT_EQ(placed.size(), 2u);  // not B2's, not the pillar's, not the one 20 m away
   for (const PlacedText& p : placed) {
+    // Both read east (heading 0): to the vehicle's right.
+    EXPECT_NEAR(p.reading.x(), 0.0, 1e-9);
+    EXPECT_NEAR(p.reading.y(), -1.0, 1e-9);
     if (p.text == "A001") {
       EXPECT_NEAR(p.vehicle_xy.x(), 3.0, 1e-9);
       EXPECT_NEAR(p.vehicle_xy.y(), 0.0, 1e-9);
@@ -58,6 +61,24 @@ TEST(TextsNear, KeepsThoseWithinTheRadiusOnceEachNearestFirst) {
   EXPECT_EQ(textsNear(placed, {0.0, 0.0}, 1.5), (std::vector<std::string>{"C001", "C002", "C004"}));
   EXPECT_TRUE(textsNear(placed, {-5.0, 0.0}, 1.0).empty());
   EXPECT_TRUE(textsNear({}, {0.0, 0.0}, 1.0).empty());
+}
+
+TEST(ReadingDirectionNear, IsTheWayTheTextsPlacedThereReadWhenTheyAgree) {
+  const Eigen::Vector2d east(1.0, 0.0), west(-1.0, 0.0), north_east(1.0, 1.0);
+  const std::vector<PlacedText> placed = {{"C001", {0.0, 0.0}, east},
+                                          {"C002", {1.3, 0.0}, north_east / std::sqrt(2.0)},
+                                          {"D001", {0.0, 3.0}, west}};
+  const double radius = 1.0, max_angle = M_PI / 6;
+  const auto near_c001 = readingDirectionNear(placed, {0.1, 0.0}, radius, max_angle);
+  ASSERT_TRUE(near_c001);
+  EXPECT_NEAR(near_c001->x(), 1.0, 1e-9);  // the nearest's own direction
+  // Between C001 and C002, which read 45 degrees apart: no direction within 30 degrees.
+  EXPECT_FALSE(readingDirectionNear(placed, {0.65, 0.0}, radius, max_angle));
+  EXPECT_TRUE(readingDirectionNear(placed, {0.65, 0.0}, radius, M_PI / 3));
+  const auto near_d001 = readingDirectionNear(placed, {0.0, 2.5}, radius, max_angle);
+  ASSERT_TRUE(near_d001);
+  EXPECT_NEAR(near_d001->x(), -1.0, 1e-9);
+  EXPECT_FALSE(readingDirectionNear(placed, {0.0, 1.5}, radius, max_angle));  // none near
 }
 
 }  // namespace

@@ -206,19 +206,43 @@ TEST_F(PpOcrSpotterTest, FloorTextDecodesAgainstTheTextsPlacedNearItUnderAPredic
   const auto rig = geometry::defaultRig();
   request.camera = rig.find("left");
   ASSERT_NE(request.camera, nullptr);
-  const cv::Mat image =
-      testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45).image;
-  request.placed_floor_texts = {{"B2-117", {2.0, 5.1}}, {"A023", {2.0, 2.6}}};
+  const auto scene =
+      testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
+  const cv::Mat& image = scene.image;
+  const Eigen::Vector2d reading(-1.0, 0.0);  // the number's heading of pi
+  request.placed_floor_texts = {{"B2-117", {2.0, 5.1}, reading}, {"A023", {2.0, 2.6}, reading}};
   auto found = spotter_->spot(image, request);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_FALSE(found[0].lexicon_match);
   EXPECT_NE(found[0].text, "A023");
 
-  request.placed_floor_texts = {{"A023", {2.0, 5.1}}, {"B2-117", {2.1, 2.5}}};
+  request.placed_floor_texts = {{"A023", {2.0, 5.1}, reading}, {"B2-117", {2.1, 2.5}, reading}};
   found = spotter_->spot(image, request);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_TRUE(found[0].lexicon_match);
   EXPECT_EQ(found[0].text, "B2-117");
+  // Its polygon reads the way the number does (turned, its corners would be 250 px off).
+  EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), 10.0);
+}
+
+// The texts placed near a floor box say which way round it reads, and it is read that way
+// only: placed as reading the other way, the same number is read upside down and matches
+// nothing.
+TEST_F(PpOcrSpotterTest, FloorTextIsReadOnlyTheWayTheTextsPlacedNearItRead) {
+  SpotRequest request;
+  request.lexicon = request.floor_lexicon = {"B2-117"};
+  const auto rig = geometry::defaultRig();
+  request.camera = rig.find("left");
+  ASSERT_NE(request.camera, nullptr);
+  const cv::Mat image =
+      testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45).image;
+  request.placed_floor_texts = {{"B2-117", {2.0, 2.6}, {1.0, 0.0}}};
+  auto found = spotter_->spot(image, request);
+  for (const TextInstance& inst : found) EXPECT_FALSE(inst.lexicon_match);
+  request.placed_floor_texts = {{"B2-117", {2.0, 2.6}, {-1.0, 0.0}}};
+  found = spotter_->spot(image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);
 }
 
 struct LeftFloorSpot {

@@ -47,6 +47,24 @@ TEST(Quad, CentreIsTheMeanOfTheCorners) {
   EXPECT_FLOAT_EQ(c.y, 3.f);
 }
 
+TEST(Quad, OrientedAlongTurnsTheQuadToReadTheGivenWayAndRefusesACrossingOne) {
+  // Reads along +x, tilted 10 degrees.
+  const Quad q = {cv::Point2f(0.f, 0.f), cv::Point2f(40.f, 7.f), cv::Point2f(38.f, 17.f),
+                  cv::Point2f(-2.f, 10.f)};
+  const double max_angle = CV_PI / 6;
+  const auto same = orientedAlong(q, {1.f, 0.f}, max_angle);
+  ASSERT_TRUE(same);
+  EXPECT_EQ((*same)[0], q[0]);
+  const auto turned = orientedAlong(q, {-3.f, 0.f}, max_angle);
+  ASSERT_TRUE(turned);
+  EXPECT_EQ((*turned)[0], q[2]);  // its top-left is the upright quad's bottom-right
+  EXPECT_EQ((*turned)[1], q[3]);
+  EXPECT_FALSE(orientedAlong(q, {0.f, 1.f}, max_angle));  // across the text
+  EXPECT_FALSE(orientedAlong(q, {1.f, 1.f}, max_angle));  // 35 degrees off
+  EXPECT_TRUE(orientedAlong(q, {1.f, 1.f}, CV_PI / 4));
+  EXPECT_FALSE(orientedAlong(q, {0.f, 0.f}, max_angle));  // no direction
+}
+
 TEST(Quad, RectifiedCropMapsCornersToTheCropEdges) {
   // A bright dot at the quad's top-left corner lands in the crop's top-left pixel.
   cv::Mat image(100, 100, CV_8UC3, cv::Scalar::all(0));

@@ -326,11 +326,25 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                       ? &request.floor_lexicon
                       : &request.lexicon;
     if (placing != nullptr) {
-      const cv::Point2f centre = quadCentre(box.quad);
-      placed_lexicons.push_back(map::textsNear(
-          request.placed_floor_texts, placing->groundFromView(centre), request.placement_radius_m));
-      job.reading_lexicon = job.lexicon;
-      job.lexicon = &placed_lexicons.back();
+      const Eigen::Vector2d ground = placing->groundFromView(quadCentre(box.quad));
+      const double radius = request.placement_radius_m;
+      if (request.placed_texts_narrow_the_lexicon) {
+        placed_lexicons.push_back(map::textsNear(request.placed_floor_texts, ground, radius));
+        job.reading_lexicon = job.lexicon;
+        job.lexicon = &placed_lexicons.back();
+      }
+      // The texts placed there say which way round the box reads.
+      const auto reading = map::readingDirectionNear(request.placed_floor_texts, ground, radius,
+                                                     options_.placed_reading_max_angle);
+      if (reading) {
+        const cv::Point2f along =
+            placing->viewFromGround(ground + *reading) - placing->viewFromGround(ground);
+        if (const auto oriented =
+                orientedAlong(job.quad, along, options_.placed_reading_max_angle)) {
+          job.quad = *oriented;
+          job.try_both_directions = false;
+        }
+      }
     }
     job.keep_unread = role == DetectorRole::kFloorView && box.score >= options_.confident_box_score;
     job.read_expand_x = read_expand_x;

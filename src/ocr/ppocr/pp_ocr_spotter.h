@@ -3,6 +3,7 @@
 // place of ABCNet): DB detection on the raw fisheye image, perspective-rectified crops,
 // CTC recognition in both reading directions, lexicon decoding and the classification head.
 // With SpotRequest::regions, only those regions are processed (map-guided spotting).
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -130,6 +131,11 @@ struct PpOcrOptions {
   DirectionMode direction = DirectionMode::kClassifier;
   float direction_confident = 0.9f;  // classifier probability above which one crop suffices
   LexiconOptions lexicon;
+  // Under a predicted pose (SpotRequest::placed_floor_texts) a floor box whose reading axis lies
+  // within this angle (radians) of the way the texts placed near it read is read that way round
+  // only: half the recognizer's work, and no reading of the number upside down ("600" for
+  // "009") to compete with the right one.
+  double placed_reading_max_angle = 30.0 * M_PI / 180.0;
   // A crop read with a lexicon (the map's texts) is read freely, too, with only these
   // characters and the lexicon's (ctcGreedyDecode): the garage's script, not the 6625
   // classes of a Chinese recognizer. Empty, or a request without a lexicon: every class.

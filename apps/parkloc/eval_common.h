@@ -47,6 +47,7 @@ struct SpotterArgs {
   float floor_binary_threshold = ocr::PpOcrOptions{}.floor_db.binary_threshold;
   std::string reading_alphabet = ocr::PpOcrOptions{}.reading_alphabet;
   float min_text_confidence = ocr::PpOcrOptions{}.min_text_confidence;
+  float unplaced_class_weight = ocr::PpOcrOptions{}.unplaced_class_weight;
   std::vector<float> floor_read_expand = {ocr::PpOcrOptions{}.floor_read_expand_x,
                                           ocr::PpOcrOptions{}.floor_read_expand_y};
 
@@ -107,6 +108,12 @@ struct SpotterArgs {
                     "reading is at least this confident")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
+    cmd->add_option("--unplaced-class-weight", unplaced_class_weight,
+                    "Under a predicted pose, the prior weight of other floor text for a box "
+                    "beside a parking number that the map places there (1: the classifier "
+                    "decides, 0: a parking number)")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
     cmd->add_option("--floor-read-expand", floor_read_expand,
                     "Floor detector: its boxes are read from a crop grown by these factors "
                     "(along, across the text)")
@@ -135,6 +142,7 @@ inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   options.floor_db.binary_threshold = args.floor_binary_threshold;
   options.reading_alphabet = args.reading_alphabet;
   options.min_text_confidence = args.min_text_confidence;
+  options.unplaced_class_weight = args.unplaced_class_weight;
   options.floor_read_expand_x = args.floor_read_expand.at(0);
   options.floor_read_expand_y = args.floor_read_expand.at(1);
   if (!args.classifier.empty() && std::filesystem::exists(args.classifier)) {

@@ -805,7 +805,7 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
                 map::placeFloorTexts(map, ekf.pose(), options.sweep_placement_range_m,
                                      options.level.empty() ? active_level : options.level);
             request.placement_radius_m = options.sweep_placement_radius_m;
-            request.placed_texts_narrow_the_lexicon = false;
+            request.narrow_to_placed_texts = false;
           }
         } else if (searching) {
           request.max_reads = std::max(0, options.search_max_reads);

@@ -15,11 +15,12 @@
 namespace parkloc::map {
 
 // A map text, where its centre lies on the floor and which way it reads, in the vehicle frame
-// (metres; a unit vector).
+// (metres; a unit vector), and its class.
 struct PlacedText {
   std::string text;
   Eigen::Vector2d vehicle_xy = Eigen::Vector2d::Zero();
   Eigen::Vector2d reading = Eigen::Vector2d::UnitX();
+  TextClass cls = TextClass::kParkingNumber;
 };
 
 // The texts painted on the floor of `level` (every level when empty) whose centre lies within

@@ -148,32 +148,36 @@ TextClassifier TextClassifier::load(const std::string& path) {
 }
 
 std::pair<map::TextClass, float> TextClassifier::predict(const cv::Mat& feature_row,
-                                                         const AllowedClasses& allowed) const {
+                                                         const ClassWeights& weights) const {
   if (empty()) return {map::TextClass::kOther, 0.f};
   cv::Mat x = (feature_row - mean_).mul(inv_std_);
   cv::Mat response;
   mlp_->predict(x, response);
-  // Softmax over the allowed outputs as a score; the outputs are in (-1.7, 1.7).
-  double best = -1e9, sum = 0.0;
+  // Softmax of the outputs (in (-1.7, 1.7)) as a score, times the weights.
+  const int n = std::min<int>(response.cols, static_cast<int>(weights.size()));
+  double top = -1e9;
+  for (int c = 0; c < n; ++c)
+    if (weights[c] > 0.f) top = std::max(top, double(response.at<float>(0, c)));
+  double best = 0.0, sum = 0.0;
   int best_class = -1;
-  for (int c = 0; c < response.cols; ++c) {
-    const double v = response.at<float>(0, c);
-    if (allowed[c] && v > best) {
-      best = v;
+  for (int c = 0; c < n; ++c) {
+    if (!(weights[c] > 0.f)) continue;
+    const double term = weights[c] * std::exp(3.0 * (response.at<float>(0, c) - top));
+    sum += term;
+    if (term > best) {
+      best = term;
       best_class = c;
     }
   }
   if (best_class < 0) return {map::TextClass::kOther, 0.f};  // nothing allowed
-  for (int c = 0; c < response.cols; ++c)
-    if (allowed[c]) sum += std::exp(3.0 * (response.at<float>(0, c) - best));
-  return {static_cast<map::TextClass>(best_class), static_cast<float>(1.0 / sum)};
+  return {static_cast<map::TextClass>(best_class), static_cast<float>(best / sum)};
 }
 
 std::pair<map::TextClass, float> TextClassifier::classify(const cv::Mat& image, const Quad& quad,
                                                           const std::string& text,
-                                                          const AllowedClasses& allowed) const {
+                                                          const ClassWeights& weights) const {
   if (empty()) return {map::TextClass::kOther, 0.f};
-  return predict(classifierFeatures(image, quad, text, options_), allowed);
+  return predict(classifierFeatures(image, quad, text, options_), weights);
 }
 
 }  // namespace parkloc::ocr

@@ -27,11 +27,13 @@ struct ClassifierFeatureOptions {
 cv::Mat classifierFeatures(const cv::Mat& image, const Quad& quad, const std::string& text,
                            const ClassifierFeatureOptions& options);
 
-// Which classes an instance may take, indexed by map::TextClass.
-using AllowedClasses = std::array<bool, 3>;
-inline constexpr AllowedClasses kAnyClass = {true, true, true};
+// Prior weights of the classes, indexed by map::TextClass: the classifier's softmax is
+// multiplied by them and renormalised, so 0 rules a class out (where the text was found can:
+// pillar text is not on the floor) and 1 leaves it as the classifier sees it.
+using ClassWeights = std::array<float, 3>;
+inline constexpr ClassWeights kAnyClass = {1.f, 1.f, 1.f};
 // Text found on the floor: a parking number or other floor text, never a pillar's.
-inline constexpr AllowedClasses kFloorClasses = {false, true, true};
+inline constexpr ClassWeights kFloorClasses = {0.f, 1.f, 1.f};
 
 struct ClassifierTrainOptions {
   int hidden_units = 8;
@@ -53,13 +55,13 @@ class TextClassifier {
   static TextClassifier load(const std::string& path);
   void save(const std::string& path) const;
 
-  // Class and its softmax-normalised score for one feature row, among the allowed classes
-  // (where the text was found can rule some out: pillar text is not on the floor).
+  // Class and its softmax-normalised score for one feature row, under the classes' prior
+  // weights.
   std::pair<map::TextClass, float> predict(const cv::Mat& feature_row,
-                                           const AllowedClasses& allowed = kAnyClass) const;
+                                           const ClassWeights& weights = kAnyClass) const;
   std::pair<map::TextClass, float> classify(const cv::Mat& image, const Quad& quad,
                                             const std::string& text,
-                                            const AllowedClasses& allowed = kAnyClass) const;
+                                            const ClassWeights& weights = kAnyClass) const;
 
  private:
   ClassifierFeatureOptions options_;

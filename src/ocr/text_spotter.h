@@ -68,10 +68,12 @@ struct SpotRequest {
   // Half a bay: the centre of a box and of its text differ by the pose's error and, for a
   // number cut by the image border, by up to half its length.
   double placement_radius_m = 1.0;
-  // True: such a box decodes against the texts placed near it. False: against all of
-  // `floor_lexicon` as without placement, the texts placed near it saying only which way
-  // round it reads (PpOcrOptions::placed_reading_max_angle).
-  bool placed_texts_narrow_the_lexicon = true;
+  // True: such a box decodes against the texts placed near it and takes the class of one of
+  // them (other floor text where none is: every parking number is in the map, not every mark
+  // on the floor). False: it decodes against all of `floor_lexicon` and takes any floor class,
+  // as without placement, the texts placed near it saying only which way round it reads
+  // (PpOcrOptions::placed_reading_max_angle).
+  bool narrow_to_placed_texts = true;
   // When non-empty, spot only inside these regions instead of the full frame.
   std::vector<RegionOfInterest> regions;
   // The camera that took the image, when known (not owned): engines may use its

@@ -105,7 +105,7 @@ TEST(TrackedReading, TheTrackingSweepGetsTheFloorTextsPlacedAroundThePose) {
           continue;
         }
         ++sweeps;
-        EXPECT_FALSE(request.placed_texts_narrow_the_lexicon);
+        EXPECT_FALSE(request.narrow_to_placed_texts);
         EXPECT_FALSE(request.floor_lexicon.empty());
         ASSERT_FALSE(request.placed_floor_texts.empty()) << "frame " << k;
         for (const map::PlacedText& placed : request.placed_floor_texts) {

@@ -36,6 +36,7 @@ TEST(PlaceFloorTexts, PutsTheFloorTextsOfTheLevelAroundTheVehicleInItsFrame) {
   const auto placed = placeFloorTexts(m, map_from_vehicle, 10.0, "B1");
   ASSERT_EQ(placed.size(), 2u);  // not B2's, not the pillar's, not the one 20 m away
   for (const PlacedText& p : placed) {
+    EXPECT_EQ(p.cls, TextClass::kParkingNumber);
     // Both read east (heading 0): to the vehicle's right.
     EXPECT_NEAR(p.reading.x(), 0.0, 1e-9);
     EXPECT_NEAR(p.reading.y(), -1.0, 1e-9);

@@ -245,6 +245,31 @@ TEST_F(PpOcrSpotterTest, FloorTextIsReadOnlyTheWayTheTextsPlacedNearItRead) {
   EXPECT_TRUE(found[0].lexicon_match);
 }
 
+// Under a predicted pose the map's classes weigh in: the same floor number is a parking
+// number where the map paints one, and other floor text where the map paints its "STOP".
+TEST(PpOcrSpotterModels, AFloorBoxTakesTheClassOfTheTextsPlacedNearIt) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.models.classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
+  PpOcrSpotter spotter(options);
+  const auto rig = geometry::defaultRig();
+  SpotRequest request;
+  request.camera = rig.find("left");
+  ASSERT_NE(request.camera, nullptr);
+  request.lexicon = request.floor_lexicon = {"B2-117", "STOP"};
+  const cv::Mat image =
+      testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45).image;
+  const Eigen::Vector2d reading(-1.0, 0.0);
+  request.placed_floor_texts = {{"B2-117", {2.0, 2.6}, reading, map::TextClass::kParkingNumber}};
+  auto found = spotter.spot(image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].cls, map::TextClass::kParkingNumber);
+  request.placed_floor_texts = {{"STOP", {2.0, 2.6}, reading, map::TextClass::kOther}};
+  found = spotter.spot(image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].cls, map::TextClass::kOther);
+}
+
 struct LeftFloorSpot {
   std::vector<TextInstance> found;
   Quad truth;

@@ -92,7 +92,7 @@ TEST(TextClassifier, LearnsSeparableClassesAndSurvivesASaveLoadRoundTrip) {
   EXPECT_GE(correct, 28);
 }
 
-TEST(TextClassifier, ChoosesOnlyAmongTheAllowedClasses) {
+TEST(TextClassifier, ChoosesOnlyAmongTheClassesWithAWeight) {
   std::mt19937 rng(11);
   const TextClassifier classifier = trainedOnSamples(rng);
   for (int i = 0; i < 9; ++i) {
@@ -109,7 +109,26 @@ TEST(TextClassifier, ChoosesOnlyAmongTheAllowedClasses) {
     EXPECT_LE(floor.second, 1.f);
   }
   const Sample s = makeSample(0, rng);
-  EXPECT_EQ(classifier.classify(s.image, s.quad, s.text, {false, false, false}).second, 0.f);
+  EXPECT_EQ(classifier.classify(s.image, s.quad, s.text, {0.f, 0.f, 0.f}).second, 0.f);
+}
+
+// A prior weight multiplies the class's softmax term: weighing one class far above the other
+// makes it the class, and equal weights change nothing.
+TEST(TextClassifier, AClassWeightTiltsTheChoice) {
+  std::mt19937 rng(12);
+  const TextClassifier classifier = trainedOnSamples(rng);
+  for (int i = 0; i < 9; ++i) {
+    const Sample s = makeSample(i % 3, rng);
+    const auto floor = classifier.classify(s.image, s.quad, s.text, kFloorClasses);
+    const auto halved = classifier.classify(s.image, s.quad, s.text, {0.f, 0.5f, 0.5f});
+    EXPECT_EQ(halved.first, floor.first);
+    EXPECT_NEAR(halved.second, floor.second, 1e-6f);
+    const auto number = classifier.classify(s.image, s.quad, s.text, {0.f, 1e6f, 1.f});
+    EXPECT_EQ(number.first, map::TextClass::kParkingNumber);
+    const auto other = classifier.classify(s.image, s.quad, s.text, {0.f, 1.f, 1e6f});
+    EXPECT_EQ(other.first, map::TextClass::kOther);
+    EXPECT_GT(other.second, 0.99f);
+  }
 }
 
 TEST(TextClassifier, MissingOrForeignFileIsAnInputError) {

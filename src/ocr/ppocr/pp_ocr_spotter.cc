@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "common/error.h"
+#include "ocr/placed_classes.h"
 #include "ocr/ppocr/pp_ocr_networks.h"
 
 namespace parkloc::ocr {
@@ -328,7 +329,7 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     if (placing != nullptr) {
       const Eigen::Vector2d ground = placing->groundFromView(quadCentre(box.quad));
       const double radius = request.placement_radius_m;
-      if (request.placed_texts_narrow_the_lexicon) {
+      if (request.narrow_to_placed_texts) {
         placed_lexicons.push_back(map::textsNear(request.placed_floor_texts, ground, radius));
         job.reading_lexicon = job.lexicon;
         job.lexicon = &placed_lexicons.back();
@@ -376,12 +377,20 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
                       request.camera->model.width == image.cols &&
                       request.camera->model.height == image.rows;
   std::vector<TextInstance> out;
-  size_t on_floor = 0;  // out[0, on_floor) came from the floor view
+  size_t on_floor = 0;                      // out[0, on_floor) came from the floor view
+  std::vector<ClassWeights> floor_classes;  // their class weights
+  const bool placed_classes = request.narrow_to_placed_texts && !request.placed_floor_texts.empty();
   if (ground) {
     // Floor text, found and read in the bird's-eye view, its corners mapped back to raw.
     const GroundView& view = groundView(*request.camera);
     for (TextInstance& inst :
          detectAndRead(view.render(image), request, nullptr, DetectorRole::kFloorView)) {
+      const ClassWeights weights =
+          placed_classes
+              ? floorClassWeightsNear(request.placed_floor_texts,
+                                      view.groundFromView(quadCentre(inst.polygon)),
+                                      request.placement_radius_m, options_.unplaced_class_weight)
+              : kFloorClasses;
       bool inside = true;
       for (auto& p : inst.polygon) {
         const auto raw = view.rawFromView(p);
@@ -394,6 +403,7 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
       // Final corner fit at the raw image's resolution, on the ground plane.
       inst.polygon = refinedCorners(image, inst.polygon, options_, request.camera);
       out.push_back(std::move(inst));
+      floor_classes.push_back(weights);
     }
     on_floor = out.size();
   }
@@ -423,7 +433,7 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
   for (size_t i = 0; i < out.size(); ++i) {
     TextInstance& inst = out[i];
     const auto [cls, score] = nets_->headFor(inst).classify(
-        image, inst.polygon, inst.text, i < on_floor ? kFloorClasses : kAnyClass);
+        image, inst.polygon, inst.text, i < on_floor ? floor_classes[i] : kAnyClass);
     inst.cls = cls;
     inst.class_score = score;
   }

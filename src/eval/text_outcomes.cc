@@ -77,6 +77,7 @@ nlohmann::json outcomeJson(const TextOutcome& outcome, const io::ImageLabels& tr
                      {"raw_text", d.raw_text},
                      {"lexicon_match", d.lexicon_match},
                      {"second_opinion", d.second_opinion},
+                     {"partial", d.partial},
                      {"class", map::toString(d.cls)},
                      {"detection_score", d.detection_score},
                      {"polygon", pointsJson(d.polygon)}};

@@ -40,6 +40,7 @@ std::string frameResultToJson(const FrameResult& r) {
                            {"raw_text", t.raw_text},
                            {"lexicon_match", t.lexicon_match},
                            {"second_opinion", t.second_opinion},
+                           {"partial", t.partial},
                            {"class", map::toString(t.cls)},
                            {"polygon", polygon},
                            {"detection_score", t.detection_score},

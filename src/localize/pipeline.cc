@@ -125,6 +125,8 @@ std::string toString(AssociationVerdict verdict) {
       return "ambiguous";
     case AssociationVerdict::kUnconfirmed:
       return "unconfirmed";
+    case AssociationVerdict::kPartial:
+      return "partial";
   }
   return "unknown";
 }
@@ -865,6 +867,8 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
         a.verdict = AssociationVerdict::kLowScore;
       } else if (afm_filters_readings && instance.read && is_number && !afm.accept(*number)) {
         a.verdict = AssociationVerdict::kAnomaly;
+      } else if (instance.partial) {
+        a.verdict = AssociationVerdict::kPartial;
       } else if (instance.second_opinion && !is_tracking) {
         // One wrong second opinion made a first fix 16.6 m off that the track never left
         // (docs/OCR.md, session 8): only the pose gate may vouch for one.

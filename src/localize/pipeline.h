@@ -263,6 +263,8 @@ enum class AssociationVerdict {
                    // tells which one (added later; additive)
   kUnconfirmed,    // a second opinion (ocr::TextInstance::second_opinion) with no tracked
                    // pose to confirm it: it may start no fix (added later; additive)
+  kPartial,        // read by the part the image shows (ocr::TextInstance::partial): the
+                   // polygon is not the text's (added later; additive)
 };
 std::string toString(AssociationVerdict verdict);
 

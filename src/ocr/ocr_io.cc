@@ -40,6 +40,7 @@ nlohmann::json toJson(const TextInstance& inst) {
           {"raw_text", inst.raw_text},
           {"lexicon_match", inst.lexicon_match},
           {"second_opinion", inst.second_opinion},
+          {"partial", inst.partial},
           {"class", map::toString(inst.cls)},
           {"class_id", static_cast<int>(inst.cls)},
           {"detection_score", inst.detection_score},

@@ -27,6 +27,10 @@ struct TextInstance {
   // fallback_recognition), after the first reader matched nothing: a second opinion, which
   // the localization lets confirm a tracked pose but never start one.
   bool second_opinion = false;
+  // The lexicon matched only the part of `text` that the image shows (a number cut by the
+  // image border, read against the texts placed near it: SpotRequest::narrow_to_placed_texts):
+  // `text` is the whole text, `polygon` spans the part (added later).
+  bool partial = false;
   map::TextClass cls = map::TextClass::kOther;
   float detection_score = 0.f;
   float recognition_score = 0.f;  // calibrated probability of `text`
@@ -73,6 +77,8 @@ struct SpotRequest {
   // on the floor). False: it decodes against all of `floor_lexicon` and takes any floor class,
   // as without placement, the texts placed near it saying only which way round it reads
   // (PpOcrOptions::placed_reading_max_angle).
+  // A box that may run out of the image then also decodes against the parts of those texts
+  // that a cut would leave (ocr/cut_parts.h; TextInstance::partial).
   bool narrow_to_placed_texts = true;
   // When non-empty, spot only inside these regions instead of the full frame.
   std::vector<RegionOfInterest> regions;

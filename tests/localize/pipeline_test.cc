@@ -313,6 +313,24 @@ TEST_F(PipelineTest, SecondOpinionsStartNoFixButConfirmATrackedPose) {
   EXPECT_LT(positionError(tracked, drive.truth(tracked.timestamp)), 0.02);
 }
 
+// A text read by the part the image shows (a cut number) has a polygon on that part only:
+// its corners are not the landmark's, and nothing uses them.
+TEST_F(PipelineTest, APartialReadingIsNotUsed) {
+  Pipeline pipeline(rig, map);
+  Drive drive;
+  int marked = 0;
+  const FrameResult r = pipeline.process(frame(drive, 0, [&](std::vector<CameraInput>& cameras) {
+    auto* real = firstParkingNumber(cameras);
+    ASSERT_NE(real, nullptr);
+    real->partial = true;
+    ++marked;
+  }));
+  ASSERT_EQ(marked, 1);
+  ASSERT_TRUE(r.has_pose);
+  EXPECT_EQ(countVerdicts(r, AssociationVerdict::kPartial), 1);
+  EXPECT_LT(positionError(r, drive.truth(0.0)), 0.01);
+}
+
 TEST_F(PipelineTest, RecoversFromKidnappingWithinThreeSeconds) {
   Pipeline pipeline(rig, map);
   Drive drive;

@@ -270,6 +270,29 @@ TEST(PpOcrSpotterModels, AFloorBoxTakesTheClassOfTheTextsPlacedNearIt) {
   EXPECT_EQ(found[0].cls, map::TextClass::kOther);
 }
 
+// A number cut by the image border shows only its end: read against the texts placed near it,
+// the part matches and stands for its whole text, marked partial, its polygon on the part.
+TEST_F(PpOcrSpotterTest, ACutFloorNumberMatchesThePlacedTextByThePartThatShows) {
+  SpotRequest request;
+  request.lexicon = request.floor_lexicon = {"B2-117", "A023"};
+  const auto rig = geometry::defaultRig();
+  request.camera = rig.find("left");
+  ASSERT_NE(request.camera, nullptr);
+  // Reading away from the car, its first character below the image's bottom edge.
+  const Eigen::Vector2d centre(2.0, 0.7), reading(0.0, 1.0);
+  const auto scene =
+      testing::renderFloorText(*request.camera, "B2-117", centre, M_PI / 2, 1.2, 0.45);
+  ASSERT_GT(scene.truth[0].y, request.camera->model.height);  // the start is cut
+  ASSERT_LT(scene.truth[1].y, request.camera->model.height);  // the end shows
+  request.placed_floor_texts = {{"B2-117", centre, reading}, {"A023", {2.0, 3.2}, reading}};
+  const auto found = spotter_->spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_TRUE(found[0].partial);
+  EXPECT_EQ(found[0].text, "B2-117");
+  for (const auto& p : found[0].polygon) EXPECT_LE(p.y, request.camera->model.height);
+}
+
 struct LeftFloorSpot {
   std::vector<TextInstance> found;
   Quad truth;

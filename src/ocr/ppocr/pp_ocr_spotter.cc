@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "common/error.h"
+#include "ocr/cut_parts.h"
 #include "ocr/placed_classes.h"
 #include "ocr/ppocr/pp_ocr_networks.h"
 
@@ -68,6 +69,8 @@ struct ReadJob {
   Quad quad;
   float detection_score = 0.f;
   const std::vector<std::string>* lexicon = nullptr;
+  // When `lexicon` is cut->texts: which whole text each entry stands for.
+  const CutCandidates* cut = nullptr;
   // The texts whose characters a free reading may use: `lexicon`, or the whole floor
   // lexicon when `lexicon` is the part of it placed near the box. Null: `lexicon`.
   const std::vector<std::string>* reading_lexicon = nullptr;
@@ -251,11 +254,33 @@ std::vector<std::optional<TextInstance>> readJobs(
     inst.lexicon_match = d.matched;
     inst.second_opinion = d.matched && b.second_opinion;
     inst.text = d.matched ? (*jobs[i].lexicon)[d.best_index] : read ? d.raw_text : "";
+    if (d.matched && jobs[i].cut != nullptr) {
+      inst.text = jobs[i].cut->whole[d.best_index];
+      inst.partial = jobs[i].cut->texts[d.best_index] != inst.text;
+    }
     inst.recognition_score = d.matched ? static_cast<float>(d.posterior) : d.raw_confidence;
     inst.detection_score = jobs[i].detection_score;
     out[i] = std::move(inst);
   }
   return out;
+}
+
+}  // namespace
+
+namespace {
+
+// Whether a floor-view quad (reading order) may run out of the camera's image at its start and
+// at its end: a point a quarter of its length beyond that end is not in the image.
+std::pair<bool, bool> mayRunOutOfTheImage(const Quad& quad, const GroundView& view,
+                                          const cv::Size& image) {
+  const cv::Point2f start = 0.5f * (quad[0] + quad[3]), end = 0.5f * (quad[1] + quad[2]);
+  const cv::Point2f beyond = 0.25f * (end - start);
+  auto seen = [&](const cv::Point2f& view_pixel) {
+    const auto raw = view.rawFromView(view_pixel);
+    return raw && raw->x >= 0.f && raw->y >= 0.f && raw->x <= image.width - 1.f &&
+           raw->y <= image.height - 1.f;
+  };
+  return {!seen(start - beyond), !seen(end + beyond)};
 }
 
 }  // namespace
@@ -318,6 +343,7 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                                   ? &groundView(*request.camera)
                                   : nullptr;
   std::deque<std::vector<std::string>> placed_lexicons;
+  std::deque<CutCandidates> cut_lexicons;
   std::vector<ReadJob> jobs;
   for (const DbBox& box : boxes) {
     ReadJob job;
@@ -344,6 +370,20 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                 orientedAlong(job.quad, along, options_.placed_reading_max_angle)) {
           job.quad = *oriented;
           job.try_both_directions = false;
+        }
+      }
+      // A box that may be a number cut by the image border also decodes against the parts of
+      // the texts placed there that the cut would leave (only when it reads one way round:
+      // the cut end must be known).
+      if (request.narrow_to_placed_texts && !job.try_both_directions &&
+          options_.min_cut_part_chars > 0 && !job.lexicon->empty()) {
+        const auto [at_start, at_end] = mayRunOutOfTheImage(
+            job.quad, *placing, {request.camera->model.width, request.camera->model.height});
+        if (at_start || at_end) {
+          cut_lexicons.push_back(withCutParts(*job.lexicon, at_start, at_end,
+                                              static_cast<size_t>(options_.min_cut_part_chars)));
+          job.cut = &cut_lexicons.back();
+          job.lexicon = &job.cut->texts;
         }
       }
     }

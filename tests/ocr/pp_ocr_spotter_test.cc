@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <opencv2/imgproc.hpp>
+#include <stdexcept>
 
 #include "common/error.h"
 #include "geometry/rig.h"
@@ -30,6 +31,17 @@ double maxCornerError(const Quad& a, const Quad& b) {
   double worst = 0;
   for (int k = 0; k < 4; ++k) worst = std::max(worst, cv::norm(a[k] - b[k]));
   return worst;
+}
+
+// A request for an image of the default rig's left camera, which sees the floor-text scenes
+// below, with `lexicon` as its lexicon and floor lexicon.
+SpotRequest leftFloorRequest(const std::vector<std::string>& lexicon) {
+  static const geometry::Rig rig = geometry::defaultRig();
+  SpotRequest request;
+  request.lexicon = request.floor_lexicon = lexicon;
+  request.camera = rig.find("left");
+  if (request.camera == nullptr) throw std::logic_error("the default rig has no left camera");
+  return request;
 }
 
 TEST_F(PpOcrSpotterTest, ReadsARenderedLineUprightAndUpsideDown) {
@@ -201,11 +213,7 @@ TEST_F(PpOcrSpotterTest, FloorTextDecodesAgainstTheFloorLexiconWhenGiven) {
 // its own text placed a bay away and another placed where it is painted, the number matches
 // nothing (nor is forced onto the other); placed where it is painted, it matches.
 TEST_F(PpOcrSpotterTest, FloorTextDecodesAgainstTheTextsPlacedNearItUnderAPredictedPose) {
-  SpotRequest request;
-  request.lexicon = request.floor_lexicon = {"B2-117", "A023"};
-  const auto rig = geometry::defaultRig();
-  request.camera = rig.find("left");
-  ASSERT_NE(request.camera, nullptr);
+  SpotRequest request = leftFloorRequest({"B2-117", "A023"});
   const auto scene =
       testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
   const cv::Mat& image = scene.image;
@@ -229,11 +237,7 @@ TEST_F(PpOcrSpotterTest, FloorTextDecodesAgainstTheTextsPlacedNearItUnderAPredic
 // only: placed as reading the other way, the same number is read upside down and matches
 // nothing.
 TEST_F(PpOcrSpotterTest, FloorTextIsReadOnlyTheWayTheTextsPlacedNearItRead) {
-  SpotRequest request;
-  request.lexicon = request.floor_lexicon = {"B2-117"};
-  const auto rig = geometry::defaultRig();
-  request.camera = rig.find("left");
-  ASSERT_NE(request.camera, nullptr);
+  SpotRequest request = leftFloorRequest({"B2-117"});
   const cv::Mat image =
       testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45).image;
   request.placed_floor_texts = {{"B2-117", {2.0, 2.6}, {1.0, 0.0}}};
@@ -273,11 +277,7 @@ TEST(PpOcrSpotterModels, AFloorBoxTakesTheClassOfTheTextsPlacedNearIt) {
 // A number cut by the image border shows only its end: read against the texts placed near it,
 // the part matches and stands for its whole text, marked partial, its polygon on the part.
 TEST_F(PpOcrSpotterTest, ACutFloorNumberMatchesThePlacedTextByThePartThatShows) {
-  SpotRequest request;
-  request.lexicon = request.floor_lexicon = {"B2-117", "A023"};
-  const auto rig = geometry::defaultRig();
-  request.camera = rig.find("left");
-  ASSERT_NE(request.camera, nullptr);
+  SpotRequest request = leftFloorRequest({"B2-117", "A023"});
   // Reading away from the car, its first character below the image's bottom edge.
   const Eigen::Vector2d centre(2.0, 0.7), reading(0.0, 1.0);
   const auto scene =

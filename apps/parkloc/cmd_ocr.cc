@@ -11,10 +11,14 @@
 #include "io/calibration_yaml.h"
 #include "io/map_geojson.h"
 #include "map/hd_map.h"
+#include "map/placed_texts.h"
 #include "ocr/ocr_io.h"
 #include "ocr/ppocr/pp_ocr_spotter.h"
 
 namespace {
+
+// The floor views' reach: texts placed farther from the vehicle cannot show in them.
+constexpr double kPlacementRangeM = 15.0;
 
 struct OcrArgs {
   std::vector<std::string> images;
@@ -29,6 +33,8 @@ struct OcrArgs {
   std::string view = "ground";
   std::string camera;
   std::string calib;
+  std::vector<double> pose;  // x, y, yaw of the vehicle in the map; empty: none
+  std::string level;
 };
 
 void run(const OcrArgs& args) {
@@ -57,7 +63,15 @@ void run(const OcrArgs& args) {
     const map::HdMap map = io::loadMap(args.map);
     request.lexicon = map::distinctTexts(map);
     request.floor_lexicon = map::distinctTexts(map, /*floor_only=*/true);
+    if (!args.pose.empty()) {
+      // A predicted pose: floor boxes read against the texts the map places near them.
+      const geometry::Pose2 map_from_vehicle(args.pose[0], args.pose[1], args.pose[2]);
+      request.placed_floor_texts =
+          map::placeFloorTexts(map, map_from_vehicle, kPlacementRangeM, args.level);
+    }
   }
+  if (!args.pose.empty() && (args.map.empty() || args.camera.empty()))
+    throw InputError("--pose needs --map and --camera");
   request.camera = camera;
   ocr::PpOcrSpotter spotter(options);
 
@@ -106,6 +120,11 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
       ->check(CLI::IsMember({"ground", "raw", "both"}))
       ->capture_default_str();
   cmd->add_flag("--no-refine", args->no_refine, "Keep DB's boxes (no corner re-fit to the ink)");
+  cmd->add_option("--pose", args->pose,
+                  "Predicted vehicle pose X Y YAW (metres, radians) in --map: each floor box is "
+                  "read against the texts placed near it, the way round they read")
+      ->expected(3);
+  cmd->add_option("--level", args->level, "With --pose: the garage level (default: every level)");
   cmd->callback([args] { run(*args); });
 });
 

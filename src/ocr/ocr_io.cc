@@ -62,6 +62,7 @@ std::string describe(const TextInstance& inst) {
                      inst.text.empty() ? "(unread)" : inst.text, map::toString(inst.cls),
                      inst.recognition_score, inst.detection_score, inst.class_score,
                      inst.second_opinion  ? "lexicon, second opinion"
+                     : inst.partial       ? "lexicon, by the part that shows"
                      : inst.lexicon_match ? "lexicon"
                      : inst.text.empty()  ? "unread"
                                           : "free",

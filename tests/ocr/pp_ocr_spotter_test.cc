@@ -330,6 +330,27 @@ TEST(PpOcrSpotterModels, TheTunedFloorDetectorReadsFloorTextThroughTheFisheye) {
   expectTheNumberMatchedAndFitted(spot);
 }
 
+// A placed box that no reading matched is read again with the margins of reread_margins: read
+// from a crop that cuts into its glyphs, the number matches only when read again.
+TEST(PpOcrSpotterModels, AnUnmatchedPlacedBoxIsReadAgainWithOtherMargins) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.models.floor_detection = floorDetectorIn(PARKLOC_MODEL_DIR);
+  options.floor_read_expand_x = 0.7f;  // a third of the number cut off, its top and bottom too
+  options.floor_read_expand_y = 0.6f;
+  SpotRequest request = leftFloorRequest({"B2-117", "A023"});
+  const cv::Mat image =
+      testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45).image;
+  request.placed_floor_texts = {{"B2-117", {2.0, 2.6}, {-1.0, 0.0}}};
+  auto found = PpOcrSpotter(options).spot(image, request);
+  for (const TextInstance& inst : found) EXPECT_FALSE(inst.lexicon_match);
+  options.reread_margins = kRereadMargins;
+  found = PpOcrSpotter(options).spot(image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_EQ(found[0].text, "B2-117");
+}
+
 // The floor detector's box is read from a crop with a margin, and reported as detected.
 TEST(PpOcrSpotterModels, TheFloorDetectorsBoxIsReadWithAMarginAndReportedAsDetected) {
   auto models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);

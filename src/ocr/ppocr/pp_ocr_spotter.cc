@@ -71,6 +71,8 @@ struct ReadJob {
   const std::vector<std::string>* lexicon = nullptr;
   // When `lexicon` is cut->texts: which whole text each entry stands for.
   const CutCandidates* cut = nullptr;
+  // `lexicon` holds the texts placed near the box (SpotRequest::narrow_to_placed_texts).
+  bool placed = false;
   // The texts whose characters a free reading may use: `lexicon`, or the whole floor
   // lexicon when `lexicon` is the part of it placed near the box. Null: `lexicon`.
   const std::vector<std::string>* reading_lexicon = nullptr;
@@ -240,6 +242,20 @@ std::vector<std::optional<TextInstance>> readJobs(
     decodeAll(again, *fallback_recognizer, true);
   }
 
+  // A box read against the texts placed near it, one way round, that nothing matched yet is
+  // read again from crops with other margins, by each recognizer.
+  CropBatch margins;
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    if (!unmatched(i) || !jobs[i].placed || jobs[i].try_both_directions) continue;
+    for (const auto& [along, across] : options.reread_margins)
+      margins.add(
+          rectifiedCrop(image, expandQuad(jobs[i].quad, along, across), CtcRecognizer::kHeight,
+                        CtcRecognizer::kMinWidth, options.recognition_max_width),
+          i, false);
+  }
+  decodeAll(margins, recognizer, false);
+  if (fallback_recognizer != nullptr) decodeAll(margins, *fallback_recognizer, true);
+
   std::vector<std::optional<TextInstance>> out(jobs.size());
   for (size_t i = 0; i < jobs.size(); ++i) {
     const Best& b = best[i];
@@ -359,6 +375,7 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
         placed_lexicons.push_back(map::textsNear(request.placed_floor_texts, ground, radius));
         job.reading_lexicon = job.lexicon;
         job.lexicon = &placed_lexicons.back();
+        job.placed = true;
       }
       // The texts placed there say which way round the box reads.
       const auto reading = map::readingDirectionNear(request.placed_floor_texts, ground, radius,

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ocr/corner_refinement.h"
 #include "ocr/db_postprocess.h"
@@ -80,6 +82,10 @@ enum class FisheyeView {
   kGroundAndRaw,  // both; raw detections already found on the floor are dropped
 };
 
+// Margins for PpOcrOptions::reread_margins, measured on val in session 14: tight, and larger
+// than the floor boxes' own.
+inline const std::vector<std::pair<float, float>> kRereadMargins = {{1.0f, 1.1f}, {1.25f, 1.7f}};
+
 struct PpOcrOptions {
   PpOcrModelPaths models;
   OnnxOptions onnx;
@@ -149,6 +155,12 @@ struct PpOcrOptions {
   // with the lexicon 80.5 -> 85.0 % of the detected, 159 cut numbers matched by their part,
   // none to a wrong text (docs/OCR.md, session 14).
   int min_cut_part_chars = 2;
+  // ... and a floor box read against the texts placed near it, one way round, that no reading
+  // matched is read again, by each recognizer, from crops grown by each of these factors
+  // (along, across the text), its matches counting as the first reading's. Empty (default):
+  // none. kRereadMargins (`--reread-unmatched`) reads more numbers for about a third more time
+  // an image (docs/OCR.md, session 14), so it is opt-in.
+  std::vector<std::pair<float, float>> reread_margins;
   // A crop read with a lexicon (the map's texts) is read freely, too, with only these
   // characters and the lexicon's (ctcGreedyDecode): the garage's script, not the 6625
   // classes of a Chinese recognizer. Empty, or a request without a lexicon: every class.

@@ -281,20 +281,16 @@ std::vector<std::optional<TextInstance>> readJobs(
   return out;
 }
 
-}  // namespace
-
-namespace {
-
 // Whether a floor-view quad (reading order) may run out of the camera's image at its start and
-// at its end: a point a quarter of its length beyond that end is not in the image.
+// at its end: a point a quarter of its length beyond that end is not in the image (pixel
+// centres 0 .. size - 1).
 std::pair<bool, bool> mayRunOutOfTheImage(const Quad& quad, const GroundView& view,
-                                          const cv::Size& image) {
+                                          const geometry::CameraModel& model) {
   const cv::Point2f start = 0.5f * (quad[0] + quad[3]), end = 0.5f * (quad[1] + quad[2]);
   const cv::Point2f beyond = 0.25f * (end - start);
   auto seen = [&](const cv::Point2f& view_pixel) {
     const auto raw = view.rawFromView(view_pixel);
-    return raw && raw->x >= 0.f && raw->y >= 0.f && raw->x <= image.width - 1.f &&
-           raw->y <= image.height - 1.f;
+    return raw && model.inImage({raw->x, raw->y}, /*margin=*/0.5);
   };
   return {!seen(start - beyond), !seen(end + beyond)};
 }
@@ -394,8 +390,8 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
       // the cut end must be known).
       if (request.narrow_to_placed_texts && !job.try_both_directions &&
           options_.min_cut_part_chars > 0 && !job.lexicon->empty()) {
-        const auto [at_start, at_end] = mayRunOutOfTheImage(
-            job.quad, *placing, {request.camera->model.width, request.camera->model.height});
+        const auto [at_start, at_end] =
+            mayRunOutOfTheImage(job.quad, *placing, request.camera->model);
         if (at_start || at_end) {
           cut_lexicons.push_back(withCutParts(*job.lexicon, at_start, at_end,
                                               static_cast<size_t>(options_.min_cut_part_chars)));

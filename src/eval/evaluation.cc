@@ -27,14 +27,6 @@ double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-Quad labelQuad(const io::LabelInstance& l) {
-  Quad q;
-  for (size_t i = 0; i < 4; ++i) {
-    q[i] = cv::Point2f(static_cast<float>(l.polygon[i].x()), static_cast<float>(l.polygon[i].y()));
-  }
-  return q;
-}
-
 // Per detection: +1 read correctly (matched to a label with the same text), 0 wrong
 // (unmatched, or matched and misread), -1 unknown (on a don't-care region).
 std::vector<int> detectionCorrectness(const io::ImageLabels& labels,
@@ -43,7 +35,7 @@ std::vector<int> detectionCorrectness(const io::ImageLabels& labels,
   std::vector<Quad> truths, found;
   std::vector<bool> dont_care;
   for (const auto& l : labels.instances) {
-    truths.push_back(labelQuad(l));
+    truths.push_back(matchedPolygon(l, options));
     dont_care.push_back(l.occluded_fraction >= options.dont_care_occlusion || !l.legible);
   }
   for (const auto& d : detections) found.push_back(d.polygon);

@@ -32,7 +32,7 @@ std::vector<TextOutcome> textOutcomes(const io::ImageLabels& truth,
   std::vector<Quad> truth_quads, detection_quads;
   std::vector<bool> dont_care;
   for (const io::LabelInstance& instance : truth.instances) {
-    truth_quads.push_back(io::pointQuad(instance.polygon));
+    truth_quads.push_back(matchedPolygon(instance, options));
     dont_care.push_back(!caredFor(instance, options));
   }
   for (const ocr::TextInstance& d : detections) detection_quads.push_back(d.polygon);

@@ -53,21 +53,27 @@ int imageSize(const json& doc, const char* key, const std::string& path) {
   return static_cast<int>(value);
 }
 
+geometry::TextPolygon readPolygon(const json& polygon, const char* key, const std::string& path,
+                                  const std::string& where) {
+  if (!polygon.is_array() || polygon.size() != 4)
+    fail(path, fmt::format("{}field '{}': expected 4 [x, y] points", where, key));
+  geometry::TextPolygon out;
+  for (size_t k = 0; k < 4; ++k) {
+    const json& p = polygon[k];
+    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+      fail(path, fmt::format("{}field '{}': point {} is not [x, y]", where, key, k));
+    out[k] = {p[0].get<double>(), p[1].get<double>()};
+    if (!out[k].allFinite())
+      fail(path, fmt::format("{}field '{}': point {} is not finite", where, key, k));
+  }
+  return out;
+}
+
 LabelInstance readInstance(const json& j, const std::string& path, size_t index) {
   const std::string where = fmt::format("instance #{}: ", index);
   if (!j.is_object()) fail(path, where + "expected an object");
   LabelInstance inst;
-  const json& polygon = field(j, "polygon", path, where);
-  if (!polygon.is_array() || polygon.size() != 4)
-    fail(path, where + "field 'polygon': expected 4 [x, y] points");
-  for (size_t k = 0; k < 4; ++k) {
-    const json& p = polygon[k];
-    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
-      fail(path, fmt::format("{}field 'polygon': point {} is not [x, y]", where, k));
-    inst.polygon[k] = {p[0].get<double>(), p[1].get<double>()};
-    if (!inst.polygon[k].allFinite())
-      fail(path, fmt::format("{}field 'polygon': point {} is not finite", where, k));
-  }
+  inst.polygon = readPolygon(field(j, "polygon", path, where), "polygon", path, where);
   inst.text = string(j, "text", path, where);
   const std::string cls = string(j, "class", path, where);
   const auto parsed = map::textClassFromString(cls);
@@ -85,6 +91,8 @@ LabelInstance readInstance(const json& j, const std::string& path, size_t index)
   }
   if (j.contains("landmark_id")) inst.landmark_id = string(j, "landmark_id", path, where);
   if (j.contains("rotation_deg")) inst.rotation_deg = number(j, "rotation_deg", path, where);
+  if (j.contains("visible_polygon"))
+    inst.visible_polygon = readPolygon(j["visible_polygon"], "visible_polygon", path, where);
   return inst;
 }
 
@@ -118,20 +126,30 @@ ImageLabels loadLabels(const std::string& path) {
   return labels;
 }
 
+namespace {
+
+json polygonJson(const geometry::TextPolygon& polygon) {
+  json out = json::array();
+  for (const auto& p : polygon) out.push_back({p.x(), p.y()});
+  return out;
+}
+
+}  // namespace
+
 void saveLabels(const ImageLabels& labels, const std::string& path) {
   json instances = json::array();
   for (const LabelInstance& inst : labels.instances) {
-    json polygon = json::array();
-    for (const auto& p : inst.polygon) polygon.push_back({p.x(), p.y()});
-    instances.push_back({{"polygon", std::move(polygon)},
-                         {"text", inst.text},
-                         {"class_id", static_cast<int>(inst.cls)},
-                         {"class", map::toString(inst.cls)},
-                         {"occluded_fraction", inst.occluded_fraction},
-                         {"truncated", inst.truncated},
-                         {"legible", inst.legible},
-                         {"landmark_id", inst.landmark_id},
-                         {"rotation_deg", inst.rotation_deg}});
+    json instance = {{"polygon", polygonJson(inst.polygon)},
+                     {"text", inst.text},
+                     {"class_id", static_cast<int>(inst.cls)},
+                     {"class", map::toString(inst.cls)},
+                     {"occluded_fraction", inst.occluded_fraction},
+                     {"truncated", inst.truncated},
+                     {"legible", inst.legible},
+                     {"landmark_id", inst.landmark_id},
+                     {"rotation_deg", inst.rotation_deg}};
+    if (inst.visible_polygon) instance["visible_polygon"] = polygonJson(*inst.visible_polygon);
+    instances.push_back(std::move(instance));
   }
   const json doc = {{"camera", labels.camera},
                     {"timestamp", labels.timestamp},
@@ -148,7 +166,7 @@ void saveIcdarLabels(const ImageLabels& labels, const std::string& path) {
   std::ofstream out(path, std::ios::binary);
   if (!out) throw IoError(fmt::format("labels {}: cannot open for writing", path));
   for (const LabelInstance& inst : labels.instances) {
-    for (const auto& p : inst.polygon)
+    for (const auto& p : inst.visible_polygon ? *inst.visible_polygon : inst.polygon)
       out << std::lround(p.x()) << ',' << std::lround(p.y()) << ',';
     const bool ignore = inst.occluded_fraction >= kIgnoreOccludedFraction || !inst.legible;
     out << (ignore ? std::string("###") : inst.text) << "\n";

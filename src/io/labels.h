@@ -4,16 +4,23 @@
 // {"camera": "front", "timestamp": 12.35, "width": 1280, "height": 800,
 //  "instances": [{"polygon": [[x, y] x4], "text": "B2-117", "class_id": 1,
 //                 "class": "parking_number", "occluded_fraction": 0.0, "truncated": false,
-//                 "legible": true, "landmark_id": "B2-117", "rotation_deg": 37.0}]}
+//                 "legible": true, "landmark_id": "B2-117", "rotation_deg": 37.0,
+//                 "visible_polygon": [[x, y] x4]}]}
 // Polygons are in pixels (OpenCV convention), reading order: top-left, top-right,
 // bottom-right, bottom-left of the text as it reads. rotation_deg is the angle of the
 // reading direction in the image (0 = left to right, 180 = upside down). "legible" is false
 // for text too thin in the image to be read (ICDAR's "###", don't care); absent means true.
+// "visible_polygon", only on text cut by the image's edge, is the part that the image shows:
+// the corners of the text's seen span, projected through the lens. The whole text's corners
+// lie outside the image, where a fisheye bends the text far from the straight quad between
+// them, so the visible part is what a detection is matched against.
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "geometry/text_polygon.h"
 #include "map/landmark.h"
 
 namespace parkloc::io {
@@ -27,6 +34,7 @@ struct LabelInstance {
   bool legible = true;  // false: too thin to read, "don't care" in the metrics
   std::string landmark_id;
   double rotation_deg = 0.0;
+  std::optional<geometry::TextPolygon> visible_polygon;  // text cut by the image's edge
 };
 
 struct ImageLabels {
@@ -39,8 +47,8 @@ struct ImageLabels {
 
 ImageLabels loadLabels(const std::string& path);  // throws InputError
 void saveLabels(const ImageLabels& labels, const std::string& path);
-// ICDAR-2015 ground-truth text file; '###' marks instances to ignore (occluded >= 0.5 or
-// not legible).
+// ICDAR-2015 ground-truth text file, text cut by the image's edge by its visible polygon;
+// '###' marks instances to ignore (occluded >= 0.5 or not legible).
 void saveIcdarLabels(const ImageLabels& labels, const std::string& path);
 
 }  // namespace parkloc::io

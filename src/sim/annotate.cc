@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/seen_span.h"
 #include "geometry/text_polygon.h"
 
 namespace parkloc::sim {
@@ -31,6 +32,40 @@ bool segmentBlocked(const GarageLevel& level, const Eigen::Vector3d& from,
   }
   return false;
 }
+
+namespace {
+
+// The image polygon of the part of a text that the image shows: the corners of its seen span
+// (geometry::seenSpan over the text's own plane), projected through the lens. Empty when
+// nothing of it is seen or a corner does not project.
+std::optional<geometry::TextPolygon> visiblePolygon(const geometry::RigCamera& camera,
+                                                    const geometry::Rigid3& camera_from_map,
+                                                    const std::array<Eigen::Vector3d, 4>& corners) {
+  // Bilinear point of the text's rectangle: u along the reading direction, v across it.
+  auto pointAt = [&](double u, double v) -> Eigen::Vector3d {
+    return (1.0 - v) * ((1.0 - u) * corners[0] + u * corners[1]) +
+           v * ((1.0 - u) * corners[3] + u * corners[2]);
+  };
+  auto imageOf = [&](double u, double v) {
+    return camera.model.project(camera_from_map * pointAt(u, v));
+  };
+  const auto span = geometry::seenSpan([&](double u, double v) {
+    const auto px = imageOf(u, v);
+    return px && camera.model.inImage(*px);
+  });
+  if (!span) return std::nullopt;
+  const std::array<std::pair<double, double>, 4> uv = {
+      {{span->u0, span->v0}, {span->u1, span->v0}, {span->u1, span->v1}, {span->u0, span->v1}}};
+  geometry::TextPolygon out;
+  for (size_t k = 0; k < 4; ++k) {
+    const auto px = imageOf(uv[k].first, uv[k].second);
+    if (!px) return std::nullopt;
+    out[k] = *px;
+  }
+  return out;
+}
+
+}  // namespace
 
 std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
                                              const geometry::RigCamera& camera,
@@ -87,6 +122,7 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
     inst.legible = legible;
     inst.truncated = inside < total;
     for (const auto& c : poly) inst.truncated = inst.truncated || !camera.model.inImage(c);
+    if (inst.truncated) inst.visible_polygon = visiblePolygon(camera, camera_from_map, corners);
     const Eigen::Vector2d reading = 0.5 * (poly[1] + poly[2]) - 0.5 * (poly[0] + poly[3]);
     inst.rotation_deg = std::atan2(reading.y(), reading.x()) * 180.0 / M_PI;
     out.push_back(inst);

@@ -77,6 +77,33 @@ TEST(OcrMetrics, CountsOfOneHandMadeImage) {
   EXPECT_DOUBLE_EQ(r.imagesPerSecond(), 2.0);
 }
 
+TEST(OcrMetrics, ATextCutByTheImageEdgeIsMatchedByThePartTheImageShows) {
+  // A 100 x 50 image. The whole text's corners lie far past the right edge; through the lens
+  // the part inside ends at x = 70 (visible_polygon), while the straight quad clipped to the
+  // image would run to the edge. The detection boxes the part that shows.
+  io::ImageLabels truth;
+  truth.width = 100;
+  truth.height = 50;
+  io::LabelInstance cut = label(40, 10, 300, 40, "C004", TextClass::kParkingNumber);
+  cut.truncated = true;
+  cut.visible_polygon = label(40, 10, 70, 40, "", TextClass::kParkingNumber).polygon;
+  truth.instances = {cut};
+  const std::vector<ocr::TextInstance> detections = {
+      detection(41, 10, 70, 40, "C004", "C004", TextClass::kParkingNumber)};
+
+  OcrEvaluator shown;  // inside_image_only, the default
+  shown.add(truth, detections, {}, 0.1);
+  EXPECT_EQ(shown.result().overall.tp, 1u);
+  EXPECT_NEAR(shown.result().overall.meanIoU(), 29.0 / 30.0, 1e-4);
+
+  OcrEvaluationOptions whole;
+  whole.inside_image_only = false;
+  OcrEvaluator whole_polygon(whole);
+  whole_polygon.add(truth, detections, {}, 0.1);
+  EXPECT_EQ(whole_polygon.result().overall.tp, 0u);
+  EXPECT_EQ(whole_polygon.result().overall.fn, 1u);
+}
+
 TEST(OcrMetrics, HeightBinsSplitAtTheirEdges) {
   EXPECT_EQ(heightBin(7.9), "under 8 px");
   EXPECT_EQ(heightBin(8.0), "8-12 px");

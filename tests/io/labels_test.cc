@@ -32,6 +32,8 @@ ImageLabels sampleLabels() {
   pillar.truncated = true;
   pillar.landmark_id = "P-C3";
   pillar.rotation_deg = 180.0;
+  pillar.visible_polygon = {Eigen::Vector2d(100.4, 200.6), Eigen::Vector2d(140.25, 200.8),
+                            Eigen::Vector2d(139.5, 240.0), Eigen::Vector2d(99.0, 239.0)};
   LabelInstance thin = number;
   thin.text = "B2-118";
   thin.legible = false;
@@ -66,6 +68,10 @@ TEST_F(LabelsTest, JsonRoundTripIsExact) {
     EXPECT_EQ(a.legible, b.legible);
     EXPECT_EQ(a.landmark_id, b.landmark_id);
     EXPECT_EQ(a.rotation_deg, b.rotation_deg);
+    ASSERT_EQ(a.visible_polygon.has_value(), b.visible_polygon.has_value());
+    if (a.visible_polygon) {
+      for (int k = 0; k < 4; ++k) EXPECT_EQ((*a.visible_polygon)[k], (*b.visible_polygon)[k]);
+    }
   }
 }
 
@@ -73,7 +79,7 @@ TEST_F(LabelsTest, IcdarFileRoundsAndMarksOccludedAndIllegibleText) {
   saveIcdarLabels(sampleLabels(), path("gt.txt"));
   EXPECT_EQ(readAll(path("gt.txt")),
             "100,201,181,201,179,240,99,239,B2-117\n"
-            "100,201,181,201,179,240,99,239,###\n"
+            "100,201,140,201,140,240,99,239,###\n"  // the cut pillar: the part it shows
             "100,201,181,201,179,240,99,239,###\n");
 }
 
@@ -115,6 +121,19 @@ TEST_F(LabelsTest, PolygonMustHaveFourPoints) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               "labels " + p + ": instance #0: field 'polygon': expected 4 [x, y] points");
+  }
+}
+
+TEST_F(LabelsTest, AVisiblePolygonIsCheckedLikeThePolygon) {
+  const std::string p = write("bad.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
+      "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "text": "A",
+      "class": "pillar", "visible_polygon": [[0,0],[1,0],[1,"x"],[0,1]]}]})");
+  try {
+    loadLabels(p);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "labels " + p + ": instance #0: field 'visible_polygon': point 2 is not [x, y]");
   }
 }
 

@@ -48,6 +48,7 @@ struct SpotterArgs {
   std::string reading_alphabet = ocr::PpOcrOptions{}.reading_alphabet;
   float min_text_confidence = ocr::PpOcrOptions{}.min_text_confidence;
   float unplaced_class_weight = ocr::PpOcrOptions{}.unplaced_class_weight;
+  double placed_open_world_weight = ocr::PpOcrOptions{}.placed_lexicon.open_world_weight;
   bool reread_unmatched = false;
   std::vector<float> floor_read_expand = {ocr::PpOcrOptions{}.floor_read_expand_x,
                                           ocr::PpOcrOptions{}.floor_read_expand_y};
@@ -115,6 +116,11 @@ struct SpotterArgs {
                     "decides, 0: a parking number)")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
+    cmd->add_option("--placed-open-world-weight", placed_open_world_weight,
+                    "Under a predicted pose, the prior weight of \"not a text placed here\" "
+                    "against the texts the map places near a floor box")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
     cmd->add_flag("--reread-unmatched", reread_unmatched,
                   "Under a predicted pose, read a floor box that matched no placed text again "
                   "with other margins (more numbers read, about a third more time)");
@@ -147,6 +153,7 @@ inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   options.reading_alphabet = args.reading_alphabet;
   options.min_text_confidence = args.min_text_confidence;
   options.unplaced_class_weight = args.unplaced_class_weight;
+  options.placed_lexicon.open_world_weight = args.placed_open_world_weight;
   if (args.reread_unmatched) options.reread_margins = ocr::kRereadMargins;
   options.floor_read_expand_x = args.floor_read_expand.at(0);
   options.floor_read_expand_y = args.floor_read_expand.at(1);

@@ -351,6 +351,24 @@ TEST(PpOcrSpotterModels, AnUnmatchedPlacedBoxIsReadAgainWithOtherMargins) {
   EXPECT_EQ(found[0].text, "B2-117");
 }
 
+// A box read against the texts placed near it decodes under PpOcrOptions::placed_lexicon, one
+// read against the whole floor lexicon under PpOcrOptions::lexicon.
+TEST(PpOcrSpotterModels, APlacedBoxDecodesUnderThePlacedLexiconsOptions) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.placed_lexicon.min_posterior = 1.01;  // no placed match can pass
+  PpOcrSpotter spotter(options);
+  SpotRequest request = leftFloorRequest({"B2-117", "A023"});
+  const cv::Mat image =
+      testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45).image;
+  auto found = spotter.spot(image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);
+  request.placed_floor_texts = {{"B2-117", {2.0, 2.6}, {-1.0, 0.0}}};
+  found = spotter.spot(image, request);
+  for (const TextInstance& inst : found) EXPECT_FALSE(inst.lexicon_match);
+}
+
 // The floor detector's box is read from a crop with a margin, and reported as detected.
 TEST(PpOcrSpotterModels, TheFloorDetectorsBoxIsReadWithAMarginAndReportedAsDetected) {
   auto models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);

@@ -207,8 +207,10 @@ std::vector<std::optional<TextInstance>> readJobs(
       const auto& lexicon = jobs[job].lexicon ? *jobs[job].lexicon : kNoLexicon;
       const auto* reading_lexicon =
           jobs[job].reading_lexicon ? jobs[job].reading_lexicon : jobs[job].lexicon;
-      LexiconDecoding d = decodeWithLexicon(outputs[k].matrix(), charset, lexicon, options.lexicon,
-                                            readingClasses(reading_lexicon));
+      LexiconDecoding d =
+          decodeWithLexicon(outputs[k].matrix(), charset, lexicon,
+                            jobs[job].placed ? options.placed_lexicon : options.lexicon,
+                            readingClasses(reading_lexicon));
       if (second_opinion && !d.matched) continue;
       // Both directions share the crop's step count, so their log probabilities compare;
       // a lexicon match beats a free reading.

@@ -96,6 +96,12 @@ LabelInstance readInstance(const json& j, const std::string& path, size_t index)
   return inst;
 }
 
+json polygonJson(const geometry::TextPolygon& polygon) {
+  json out = json::array();
+  for (const auto& p : polygon) out.push_back({p.x(), p.y()});
+  return out;
+}
+
 }  // namespace
 
 ImageLabels loadLabels(const std::string& path) {
@@ -125,16 +131,6 @@ ImageLabels loadLabels(const std::string& path) {
     labels.instances.push_back(readInstance(instances[i], path, i));
   return labels;
 }
-
-namespace {
-
-json polygonJson(const geometry::TextPolygon& polygon) {
-  json out = json::array();
-  for (const auto& p : polygon) out.push_back({p.x(), p.y()});
-  return out;
-}
-
-}  // namespace
 
 void saveLabels(const ImageLabels& labels, const std::string& path) {
   json instances = json::array();

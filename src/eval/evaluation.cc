@@ -13,6 +13,7 @@
 #include "eval/conditions.h"
 #include "eval/dataset.h"
 #include "eval/dead_reckoning.h"
+#include "eval/frame_set_recall.h"
 #include "eval/pose_prediction.h"
 #include "eval/tables.h"
 #include "io/sequence.h"
@@ -207,6 +208,7 @@ TrajectoryView makeView(const io::Sequence& seq, const VariantRun& run, double t
 OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSpotter& spotter,
                           const OcrRunOptions& options) {
   OcrEvaluator evaluator(options.metrics);
+  FrameSetRecallTally frame_sets(options.metrics);
   for (size_t s = 0; s < sequences.size(); ++s) {
     const io::Sequence seq(sequences[s]);
     const std::vector<std::string> conditions =
@@ -241,12 +243,16 @@ OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSp
         const auto start = Clock::now();
         const std::vector<ocr::TextInstance> found = spotter.spot(image, request);
         evaluator.add(*labels, found, conditions, msSince(start) / 1000.0);
+        frame_sets.addImage(*labels, found);
         if (options.on_image) options.on_image(name, *labels, found);
       }
+      frame_sets.endFrameSet();
       if (options.progress) options.progress({stage, i + 1, frames});
     }
   }
-  return evaluator.result();
+  OcrEvaluation out = evaluator.result();
+  out.parking_numbers_per_frame_set = frame_sets.result();
+  return out;
 }
 
 EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,

@@ -42,6 +42,15 @@ struct OcrCounts {
   }
 };
 
+// Per frame set, each cared-for parking number counted once (eval/frame_set_recall.h).
+struct FrameSetRecall {
+  size_t numbers = 0;  // (frame set, parking number) pairs cared for in some camera's image
+  size_t found = 0;    // ... found in some camera's image
+  size_t read = 0;     // ... found and read right in some camera's image
+  double foundShare() const { return numbers ? static_cast<double>(found) / numbers : 0.0; }
+  double readShare() const { return numbers ? static_cast<double>(read) / numbers : 0.0; }
+};
+
 struct OcrEvaluation {
   OcrCounts overall;
   std::map<std::string, OcrCounts> by_class;      // "parking_number", "pillar", "other"
@@ -53,6 +62,9 @@ struct OcrEvaluation {
   // occluded), whatever its label's legibility: the simulator's rule until session 6, kept
   // so that figures compare across the change to the blur- and pitch-aware rule.
   std::map<std::string, OcrCounts> height_rule_by_class;
+  // Parking numbers per frame set, found or read in some camera's image
+  // (eval/frame_set_recall.h; filled by evaluateOcr, empty from OcrEvaluator alone).
+  FrameSetRecall parking_numbers_per_frame_set;
   size_t images = 0;
   double spotting_seconds = 0.0;  // time spent in the engine, for images per second
   double imagesPerSecond() const {

@@ -154,9 +154,27 @@ Table table3HeightRule(const OcrEvaluation& ocr) {
   return t;
 }
 
+Table table3FrameSets(const OcrEvaluation& ocr) {
+  const FrameSetRecall& r = ocr.parking_numbers_per_frame_set;
+  Table t;
+  t.key = "table3_frame_sets";
+  t.title = "Table 3 per frame set: parking numbers found by some camera";
+  t.caption =
+      "Each (frame set, parking number) pair cared for in some camera's image counts once: "
+      "found when some camera's image found it, read when some camera found it and read it "
+      "right. The localization works on the frame set.";
+  t.header = {"Pairs", "Found by some camera", "Found and read right by some camera"};
+  t.rows.push_back({TableCell::number(static_cast<double>(r.numbers), 0),
+                    TableCell::percent(r.foundShare()), TableCell::percent(r.readShare())});
+  return t;
+}
+
 std::vector<Table> table3All(const OcrEvaluation& ocr,
                              const std::optional<AnomalyFilterCounts>& afm) {
-  return {table3(ocr, afm), table3Conditions(ocr), table3Heights(ocr), table3HeightRule(ocr)};
+  std::vector<Table> out = {table3(ocr, afm), table3Conditions(ocr), table3Heights(ocr),
+                            table3HeightRule(ocr)};
+  if (ocr.parking_numbers_per_frame_set.numbers > 0) out.push_back(table3FrameSets(ocr));
+  return out;
 }
 
 Table table10(const std::vector<AblationRow>& paper_rows, const std::vector<VariantResult>& extra) {

@@ -38,6 +38,8 @@ Table table3Conditions(const OcrEvaluation& ocr);
 Table table3Heights(const OcrEvaluation& ocr);
 // Per class under the height-only legibility rule (OcrEvaluation::height_rule_by_class).
 Table table3HeightRule(const OcrEvaluation& ocr);
+// Parking numbers per frame set (OcrEvaluation::parking_numbers_per_frame_set).
+Table table3FrameSets(const OcrEvaluation& ocr);
 // The four above, in that order.
 std::vector<Table> table3All(const OcrEvaluation& ocr,
                              const std::optional<AnomalyFilterCounts>& afm);

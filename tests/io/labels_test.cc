@@ -48,6 +48,16 @@ std::string readAll(const std::string& p) {
   return s.str();
 }
 
+// The message of the InputError that loading `path` throws; "no error" when it loads.
+std::string loadError(const std::string& path) {
+  try {
+    loadLabels(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
 TEST_F(LabelsTest, JsonRoundTripIsExact) {
   const ImageLabels labels = sampleLabels();
   saveLabels(labels, path("l.json"));
@@ -91,50 +101,29 @@ TEST_F(LabelsTest, LegibleDefaultsToTrueAndMustBeABoolean) {
   const std::string bad = write("bad.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
       "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "text": "A",
       "class": "pillar", "legible": "yes"}]})");
-  try {
-    loadLabels(bad);
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "labels " + bad + ": instance #0: field 'legible': expected a boolean");
-  }
+  EXPECT_EQ(loadError(bad), "labels " + bad + ": instance #0: field 'legible': expected a boolean");
 }
 
 TEST_F(LabelsTest, MissingFieldIsNamed) {
   const std::string p = write("bad.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
       "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "class": "pillar"}]})");
-  try {
-    loadLabels(p);
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "labels " + p + ": instance #0: missing field 'text'");
-  }
+  EXPECT_EQ(loadError(p), "labels " + p + ": instance #0: missing field 'text'");
 }
 
 TEST_F(LabelsTest, PolygonMustHaveFourPoints) {
   const std::string p = write("bad.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
       "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1]], "text": "A",
       "class": "pillar"}]})");
-  try {
-    loadLabels(p);
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "labels " + p + ": instance #0: field 'polygon': expected 4 [x, y] points");
-  }
+  EXPECT_EQ(loadError(p),
+            "labels " + p + ": instance #0: field 'polygon': expected 4 [x, y] points");
 }
 
 TEST_F(LabelsTest, AVisiblePolygonIsCheckedLikeThePolygon) {
   const std::string p = write("bad.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
       "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "text": "A",
       "class": "pillar", "visible_polygon": [[0,0],[1,0],[1,"x"],[0,1]]}]})");
-  try {
-    loadLabels(p);
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "labels " + p + ": instance #0: field 'visible_polygon': point 2 is not [x, y]");
-  }
+  EXPECT_EQ(loadError(p),
+            "labels " + p + ": instance #0: field 'visible_polygon': point 2 is not [x, y]");
 }
 
 }  // namespace

@@ -17,9 +17,6 @@
 
 namespace {
 
-// The floor views' reach: texts placed farther from the vehicle cannot show in them.
-constexpr double kPlacementRangeM = 15.0;
-
 struct OcrArgs {
   std::vector<std::string> images;
   bool json = false;
@@ -67,7 +64,7 @@ void run(const OcrArgs& args) {
       // A predicted pose: floor boxes read against the texts the map places near them.
       const geometry::Pose2 map_from_vehicle(args.pose[0], args.pose[1], args.pose[2]);
       request.placed_floor_texts =
-          map::placeFloorTexts(map, map_from_vehicle, kPlacementRangeM, args.level);
+          map::placeFloorTexts(map, map_from_vehicle, map::kFloorViewReachM, args.level);
     }
   }
   if (!args.pose.empty() && (args.map.empty() || args.camera.empty()))

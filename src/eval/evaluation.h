@@ -12,6 +12,7 @@
 #include "eval/report.h"
 #include "io/tum.h"
 #include "localize/pipeline.h"
+#include "map/placed_texts.h"
 #include "ocr/text_spotter.h"
 
 namespace parkloc::eval {
@@ -33,7 +34,8 @@ struct OcrRunOptions {
   // (eval/pose_prediction.h, map/placed_texts.h). Drives without one, and frame sets with no
   // recent estimate before them, decode against the whole lexicon as without.
   std::map<std::string, std::vector<io::StampedPose>> estimated_poses;
-  double placement_range_m = 15.0;  // texts placed around the vehicle (the floor views' reach)
+  double placement_range_m =
+      map::kFloorViewReachM;        // texts placed around the vehicle (the floor views' reach)
   double placement_radius_m = 1.0;  // ocr::SpotRequest::placement_radius_m
   ProgressCallback progress;
   // Called with every scored image: the drive's folder name, its labels and what the

@@ -22,6 +22,7 @@
 #include "geometry/rig.h"
 #include "io/odometry_csv.h"
 #include "map/hd_map.h"
+#include "map/placed_texts.h"
 #include "ocr/text_spotter.h"
 
 namespace parkloc::localize {
@@ -182,7 +183,7 @@ struct PipelineOptions {
   // cut numbers, whose corners raised the val split's mean error from 1.41 to 1.75 cm.
   // Off (false): both ways round, as before.
   bool sweep_places_floor_texts = true;
-  double sweep_placement_range_m = 15.0;
+  double sweep_placement_range_m = map::kFloorViewReachM;
   double sweep_placement_radius_m = 1.0;
 
   // Searching (added later; additive): before the first fix, this many cameras are spotted

@@ -23,6 +23,11 @@ struct PlacedText {
   TextClass cls = TextClass::kParkingNumber;
 };
 
+// How far from the vehicle a text can still show in a camera's floor view (ocr::GroundView
+// reaches 6 m ahead of and beside each camera), with room for the pose's error: the radius the
+// callers of placeFloorTexts place texts within.
+inline constexpr double kFloorViewReachM = 15.0;
+
 // The texts painted on the floor of `level` (every level when empty) whose centre lies within
 // `radius` metres of the vehicle at `map_from_vehicle`, placed in the vehicle frame.
 std::vector<PlacedText> placeFloorTexts(const HdMap& map, const geometry::Pose2& map_from_vehicle,

@@ -90,7 +90,8 @@ struct OcrEvaluationOptions {
 MatchingOptions matchingFor(const OcrEvaluationOptions& options, const io::ImageLabels& labels);
 
 // The polygon a detection is matched against: the part the image shows for text cut by the
-// image's edge (io::LabelInstance::visible_polygon) when `inside_image_only`, else the label's.
+// image's edge or partly hidden (io::LabelInstance::visible_polygon) when `inside_image_only`,
+// else the label's.
 Quad matchedPolygon(const io::LabelInstance& instance, const OcrEvaluationOptions& options);
 
 // Whether a label counts in the tables: legible and less than dont_care_occlusion occluded.

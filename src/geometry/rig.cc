@@ -25,6 +25,16 @@ Eigen::Matrix3d vehicleFromCameraRotation(double yaw, double pitch_down, double 
          forward;
 }
 
+bool sameCalibration(const RigCamera& a, const RigCamera& b) {
+  const CameraModel &m = a.model, &n = b.model;
+  const bool same_body = a.body.has_value() == b.body.has_value() &&
+                         (!a.body || (a.body->lo == b.body->lo && a.body->hi == b.body->hi));
+  return a.name == b.name && m.type == n.type && m.width == n.width && m.height == n.height &&
+         m.fx == n.fx && m.fy == n.fy && m.cx == n.cx && m.cy == n.cy &&
+         m.distortion == n.distortion && m.max_theta == n.max_theta &&
+         a.vehicle_from_camera.matrix() == b.vehicle_from_camera.matrix() && same_body;
+}
+
 Rig defaultRig() {
   CameraModel fisheye;
   fisheye.type = CameraModelType::kFisheye;
@@ -48,11 +58,14 @@ Rig defaultRig() {
   };
   const double deg = M_PI / 180.0;
   Rig rig;
-  // A 4.7 m car: 2.8 m wheelbase, 0.9 m front and 1.0 m rear overhang, 1.85 m wide.
+  // A 4.7 m car: 2.8 m wheelbase, 0.9 m front and 1.0 m rear overhang, 1.85 m wide. The
+  // cameras sit on its bumpers and (mirrors) 2.5 cm beside its flanks.
   rig.cameras.push_back(make("front", {3.70, 0.0, 0.60}, 0.0, 20.0 * deg));
   rig.cameras.push_back(make("rear", {-1.00, 0.0, 0.90}, M_PI, 30.0 * deg));
   rig.cameras.push_back(make("left", {2.00, 0.95, 1.00}, M_PI / 2, 55.0 * deg));
   rig.cameras.push_back(make("right", {2.00, -0.95, 1.00}, -M_PI / 2, 55.0 * deg));
+  const VehicleBody body{Eigen::Vector3d(-1.0, -0.925, 0.15), Eigen::Vector3d(3.7, 0.925, 1.45)};
+  for (auto& camera : rig.cameras) camera.body = body;
   return rig;
 }
 

@@ -7,12 +7,16 @@
 #include <filesystem>
 #include <fstream>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <set>
 
 #include "common/error.h"
 
 namespace parkloc::io {
 namespace {
+
+// The top-level key of the vehicle's body box (geometry::RigCamera::body).
+constexpr const char* kBodyKey = "vehicle_body";
 
 // Tolerance for R^T R = I in T_vehicle_camera: loose enough for matrices written with
 // fewer digits by other tools, tight enough to catch a scaled or sheared rotation.
@@ -83,10 +87,12 @@ class CalibReader {
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError(fmt::format("calib {}: {}", path_, what));
   }
+  // `camera` names a camera, or the top-level map for its own fields ("vehicle_body").
   [[noreturn]] void fail(const std::string& camera, const std::string& field,
                          const std::string& what) const {
-    throw InputError(
-        fmt::format("calib {}: camera '{}': field '{}': {}", path_, camera, field, what));
+    const std::string where =
+        camera == kBodyKey ? std::string(kBodyKey) : fmt::format("camera '{}'", camera);
+    throw InputError(fmt::format("calib {}: {}: field '{}': {}", path_, where, field, what));
   }
 
   void require(const cv::FileNode& parent, const std::string& camera, const std::string& field,
@@ -217,6 +223,25 @@ class CalibReader {
     return camera;
   }
 
+  // The optional `vehicle_body: {min: 3x1, max: 3x1}` box, in the vehicle frame.
+  std::optional<geometry::VehicleBody> readBody(const cv::FileNode& root) const {
+    const cv::FileNode node = root[kBodyKey];
+    if (node.empty()) return std::nullopt;
+    if (!node.isMap()) fail(fmt::format("field '{}': expected a map with min and max", kBodyKey));
+    const cv::Mat lo = readMatrix(node, kBodyKey, "min", 3, 1);
+    const cv::Mat hi = readMatrix(node, kBodyKey, "max", 3, 1);
+    geometry::VehicleBody body;
+    for (int a = 0; a < 3; ++a) {
+      body.lo[a] = lo.at<double>(a, 0);
+      body.hi[a] = hi.at<double>(a, 0);
+      if (!(body.lo[a] < body.hi[a]))
+        fail(kBodyKey, "max",
+             fmt::format("must exceed min on every axis ({} <= {} on axis {})", body.hi[a],
+                         body.lo[a], a));
+    }
+    return body;
+  }
+
   geometry::Rig read() const {
     if (!std::filesystem::is_regular_file(path_)) fail("file not found");
     if (const std::string problem = documentShapeProblem(path_); !problem.empty())
@@ -234,9 +259,11 @@ class CalibReader {
     if (cameras.size() == 0) fail("field 'cameras': no cameras");
     std::set<std::string> names;
     size_t index = 0;
+    const std::optional<geometry::VehicleBody> body = readBody(fs.root());
     for (const auto& node : cameras) {
       geometry::RigCamera camera = readCamera(node, index++);
       if (!names.insert(camera.name).second) fail(camera.name, "name", "duplicate camera name");
+      camera.body = body;
       rig.cameras.push_back(std::move(camera));
     }
     return rig;
@@ -301,6 +328,12 @@ void saveCalibration(const geometry::Rig& rig, const std::string& path) {
     fs << "}";
   }
   fs << "]";
+  for (const auto& camera : rig.cameras)
+    if (camera.body) {
+      fs << kBodyKey << "{"
+         << "min" << toCv(camera.body->lo) << "max" << toCv(camera.body->hi) << "}";
+      break;
+    }
   fs.release();
 }
 

@@ -10,10 +10,12 @@
 // bottom-right, bottom-left of the text as it reads. rotation_deg is the angle of the
 // reading direction in the image (0 = left to right, 180 = upside down). "legible" is false
 // for text too thin in the image to be read (ICDAR's "###", don't care); absent means true.
-// "visible_polygon", only on text cut by the image's edge, is the part that the image shows:
-// the corners of the text's seen span, projected through the lens. The whole text's corners
-// lie outside the image, where a fisheye bends the text far from the straight quad between
-// them, so the visible part is what a detection is matched against.
+// "visible_polygon", only on text cut by the image's edge or partly hidden (by a car, a pillar
+// or the recording car's own body), is the part that the image shows: the corners of the
+// text's seen span, projected through the lens. A cut text's whole corners lie outside the
+// image, where a fisheye bends the text far from the straight quad between them, and a
+// detector can box only the ink that shows, so the visible part is what a detection is matched
+// against.
 #include <Eigen/Core>
 #include <array>
 #include <optional>
@@ -34,7 +36,7 @@ struct LabelInstance {
   bool legible = true;  // false: too thin to read, "don't care" in the metrics
   std::string landmark_id;
   double rotation_deg = 0.0;
-  std::optional<geometry::TextPolygon> visible_polygon;  // text cut by the image's edge
+  std::optional<geometry::TextPolygon> visible_polygon;  // text cut or partly hidden
 };
 
 struct ImageLabels {

@@ -34,16 +34,40 @@ GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOption
   auto roundUp32 = [](double v) {
     return std::max(32, static_cast<int>(std::ceil(v / 32.0)) * 32);
   };
-  const int cols = roundUp32((hi.x() - lo.x()) / options.resolution);
-  const int rows = roundUp32((hi.y() - lo.y()) / options.resolution);
+  buildMaps(roundUp32((hi.x() - lo.x()) / options.resolution),
+            roundUp32((hi.y() - lo.y()) / options.resolution));
+  // Cropped to the rows and columns where the camera sees the floor, and a margin: the
+  // detector's time goes with the view's area, and the floor under the vehicle's body and,
+  // for the front and rear cameras, beside it is hidden. The margin keeps a number that the
+  // body cuts off the view's edge, where the detector finds text worse.
+  const auto& model = camera.model;
+  cv::Mat seen(size(), CV_8U, cv::Scalar(0));
+  for (int r = 0; r < seen.rows; ++r)
+    for (int c = 0; c < seen.cols; ++c) {
+      const float x = map_x_.at<float>(r, c), y = map_y_.at<float>(r, c);
+      seen.at<uint8_t>(r, c) = x >= 0.f && y >= 0.f && x <= model.width - 1.f &&
+                               y <= model.height - 1.f &&
+                               !hiddenByTheBody(groundFromView(cv::Point2f(c, r)));
+    }
+  constexpr int kMarginPx = 32;
+  const cv::Rect box = (cv::boundingRect(seen) + cv::Size(2 * kMarginPx, 2 * kMarginPx) -
+                        cv::Point(kMarginPx, kMarginPx)) &
+                       cv::Rect(cv::Point(0, 0), size());
+  if (box.area() > 0 && box.size() != size()) {
+    origin_ = groundFromView(cv::Point2f(box.x, box.y));
+    buildMaps(roundUp32(box.width), roundUp32(box.height));
+  }
+}
+
+void GroundView::buildMaps(int cols, int rows) {
   map_x_.create(rows, cols, CV_32F);
   map_y_.create(rows, cols, CV_32F);
-  const geometry::Rigid3 camera_from_vehicle = camera.vehicle_from_camera.inverse();
+  const geometry::Rigid3 camera_from_vehicle = camera_.vehicle_from_camera.inverse();
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
       const Eigen::Vector2d g = groundFromView(cv::Point2f(c, r));
       const auto px =
-          camera.model.project(camera_from_vehicle * Eigen::Vector3d(g.x(), g.y(), 0.0));
+          camera_.model.project(camera_from_vehicle * Eigen::Vector3d(g.x(), g.y(), 0.0));
       map_x_.at<float>(r, c) = px ? static_cast<float>(px->x()) : -1e4f;
       map_y_.at<float>(r, c) = px ? static_cast<float>(px->y()) : -1e4f;
     }
@@ -63,6 +87,18 @@ cv::Point2f GroundView::viewFromGround(const Eigen::Vector2d& vehicle_xy) const 
   // right_ and toward_ are orthonormal, so the inverse is a projection onto each axis.
   const Eigen::Vector2d d = (vehicle_xy - origin_) / options_.resolution;
   return cv::Point2f(static_cast<float>(d.dot(right_)), static_cast<float>(d.dot(toward_)));
+}
+
+bool GroundView::hiddenByTheBody(const Eigen::Vector2d& vehicle_xy) const {
+  return camera_.body &&
+         geometry::bodyBlocks(*camera_.body, camera_.vehicle_from_camera.translation(),
+                              Eigen::Vector3d(vehicle_xy.x(), vehicle_xy.y(), 0.0));
+}
+
+bool GroundView::seesTheFloorAt(const cv::Point2f& view_pixel) const {
+  const auto raw = rawFromView(view_pixel);
+  return raw && camera_.model.inImage({raw->x, raw->y}, /*margin=*/0.5) &&
+         !hiddenByTheBody(groundFromView(view_pixel));
 }
 
 std::optional<cv::Point2f> GroundView::rawFromView(const cv::Point2f& v) const {

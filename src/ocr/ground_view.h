@@ -24,14 +24,22 @@ struct GroundViewOptions {
 
 class GroundView {
  public:
-  // Precomputes the remap tables; view sizes are multiples of 32 (the detector's stride).
+  // Precomputes the remap tables; view sizes are multiples of 32 (the detector's stride). The
+  // view is the options' rectangle cropped to the part where the camera sees the floor (in the
+  // image, not behind the vehicle's body), with a margin of 32 view pixels.
   GroundView(const geometry::RigCamera& camera, const GroundViewOptions& options = {});
 
   cv::Size size() const { return map_x_.size(); }
-  // The view of a raw image (black where the camera does not see the floor).
+  const geometry::RigCamera& camera() const { return camera_; }
+  // The view of a raw image: black outside the lens' field; where the vehicle's body hides
+  // the floor, whatever the image shows there (the body), as a detector would see it.
   cv::Mat render(const cv::Mat& raw) const;
   // View pixel -> raw image pixel through the ground plane; empty outside the lens' field.
+  // Where the vehicle's body hides the floor, the pixel that shows the body.
   std::optional<cv::Point2f> rawFromView(const cv::Point2f& view_pixel) const;
+  // Whether the camera sees the floor at a view pixel: inside its image (half a pixel in from
+  // the border) and not behind the vehicle's body.
+  bool seesTheFloorAt(const cv::Point2f& view_pixel) const;
   // Raw image pixel -> view pixel through the ground plane; empty when the pixel's ray does
   // not meet the floor in front of the camera (above the horizon) or cannot be unprojected.
   // Exact for points on the floor only: anything above it lands farther out in the view.
@@ -41,6 +49,9 @@ class GroundView {
   cv::Point2f viewFromGround(const Eigen::Vector2d& vehicle_xy) const;
 
  private:
+  bool hiddenByTheBody(const Eigen::Vector2d& vehicle_xy) const;
+  void buildMaps(int cols, int rows);  // from origin_, right_, toward_
+
   geometry::RigCamera camera_;
   GroundViewOptions options_;
   Eigen::Vector2d origin_, right_, toward_;  // ground point of view pixel (0, 0) and axes

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "geometry/seen_span.h"
 #include "geometry/text_polygon.h"
@@ -36,11 +37,12 @@ bool segmentBlocked(const GarageLevel& level, const Eigen::Vector3d& from,
 namespace {
 
 // The image polygon of the part of a text that the image shows: the corners of its seen span
-// (geometry::seenSpan over the text's own plane), projected through the lens. Empty when
-// nothing of it is seen or a corner does not project.
-std::optional<geometry::TextPolygon> visiblePolygon(const geometry::RigCamera& camera,
-                                                    const geometry::Rigid3& camera_from_map,
-                                                    const std::array<Eigen::Vector3d, 4>& corners) {
+// (geometry::seenSpan over the text's own plane: inside the image and not hidden), projected
+// through the lens. Empty when nothing of it is seen or a corner does not project.
+std::optional<geometry::TextPolygon> visiblePolygon(
+    const geometry::RigCamera& camera, const geometry::Rigid3& camera_from_map,
+    const std::array<Eigen::Vector3d, 4>& corners,
+    const std::function<bool(const Eigen::Vector3d&)>& hidden) {
   // Bilinear point of the text's rectangle: u along the reading direction, v across it.
   auto pointAt = [&](double u, double v) -> Eigen::Vector3d {
     return (1.0 - v) * ((1.0 - u) * corners[0] + u * corners[1]) +
@@ -51,7 +53,7 @@ std::optional<geometry::TextPolygon> visiblePolygon(const geometry::RigCamera& c
   };
   const auto span = geometry::seenSpan([&](double u, double v) {
     const auto px = imageOf(u, v);
-    return px && camera.model.inImage(*px);
+    return px && camera.model.inImage(*px) && !hidden(pointAt(u, v));
   });
   if (!span) return std::nullopt;
   const std::array<std::pair<double, double>, 4> uv = {
@@ -75,6 +77,13 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
   const geometry::Rigid3 map_from_camera = map_from_vehicle.toRigid3() * camera.vehicle_from_camera;
   const geometry::Rigid3 camera_from_map = map_from_camera.inverse();
   const Eigen::Vector3d eye = map_from_camera.translation();
+  const geometry::Rigid3 vehicle_from_map = map_from_vehicle.toRigid3().inverse();
+  const Eigen::Vector3d eye_in_vehicle = camera.vehicle_from_camera.translation();
+  const auto hidden = [&](const Eigen::Vector3d& p) {
+    return segmentBlocked(L, eye, p) ||
+           (camera.body &&
+            geometry::bodyBlocks(*camera.body, eye_in_vehicle, vehicle_from_map * p));
+  };
   std::vector<io::LabelInstance> out;
   for (const TextItem& item : L.texts) {
     const map::Landmark& lm = item.landmark;
@@ -98,7 +107,7 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
     if (height <= 0.0 || height < options.min_labelled_height_px) continue;
     const bool legible = isLegible(poly, characterCount(lm.text), options.blur, options.legibility);
     // Sample points on the text: inside the image, and seen or hidden.
-    int inside = 0, hidden = 0, total = 0;
+    int inside = 0, hidden_count = 0, total = 0;
     const Eigen::Vector3d r = lm.readingDirection() * lm.width;
     const Eigen::Vector3d u = lm.upDirection() * lm.height;
     for (int i = 0; i < options.samples_u; ++i)
@@ -110,7 +119,7 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
         const auto px = camera.model.project(camera_from_map * p);
         if (!px || !camera.model.inImage(*px)) continue;
         ++inside;
-        if (segmentBlocked(L, eye, p)) ++hidden;
+        if (hidden(p)) ++hidden_count;
       }
     if (inside < options.min_inside_fraction * total) continue;
     io::LabelInstance inst;
@@ -118,11 +127,14 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
     inst.text = lm.text;
     inst.cls = lm.cls;
     inst.landmark_id = lm.id;
-    inst.occluded_fraction = static_cast<double>(hidden) / inside;
+    inst.occluded_fraction = static_cast<double>(hidden_count) / inside;
     inst.legible = legible;
     inst.truncated = inside < total;
     for (const auto& c : poly) inst.truncated = inst.truncated || !camera.model.inImage(c);
-    if (inst.truncated) inst.visible_polygon = visiblePolygon(camera, camera_from_map, corners);
+    // What an annotator would box: the part that shows, when an edge, an obstacle or the car
+    // itself hides the text's ends.
+    if (inst.truncated || hidden_count > 0)
+      inst.visible_polygon = visiblePolygon(camera, camera_from_map, corners, hidden);
     const Eigen::Vector2d reading = 0.5 * (poly[1] + poly[2]) - 0.5 * (poly[0] + poly[3]);
     inst.rotation_deg = std::atan2(reading.y(), reading.x()) * 180.0 / M_PI;
     out.push_back(inst);

@@ -1,7 +1,8 @@
 #pragma once
 // Ground-truth text labels of one rendered image: every text of the level (map landmarks
 // and licence plates) projected through the vehicle pose and the camera, with truncation,
-// occlusion by pillars and cars, and the reading direction's angle in the image.
+// occlusion by pillars, cars and the recording car itself (the camera's body), and the reading
+// direction's angle in the image.
 #include <vector>
 
 #include "geometry/pose.h"

@@ -250,6 +250,8 @@ struct Renderer::Impl {
     float x, y, z, angle;
   };
   std::vector<std::vector<VehicleRay>> vehicle_rays;
+  // Per camera: 1 where the pixel's ray meets the recording car's body (empty: no body).
+  std::vector<std::vector<uint8_t>> ego_masks;
   std::vector<float> gamma_lut;  // 8-bit values, as float for the noise sum
   static constexpr int kLutSize = 4096;
   static constexpr float kLutMax = 1.5f;
@@ -356,7 +358,14 @@ struct Renderer::Impl {
         const Eigen::Vector3f rv = vehicle_from_camera * rc;
         vr[i] = {rv.x(), rv.y(), rv.z(), std::max(1e-4f, cr.pixel_angle[i])};
       }
+      const auto& body = rig.cameras[ci].body;
+      std::vector<uint8_t> ego(body ? vr.size() : 0, 0);
+      const Eigen::Vector3d eye = rig.cameras[ci].vehicle_from_camera.translation();
+      for (size_t i = 0; i < ego.size(); ++i)
+        ego[i] = vr[i].angle > 0.0f &&
+                 geometry::bodyHitsRay(*body, eye, Eigen::Vector3d(vr[i].x, vr[i].y, vr[i].z));
       vehicle_rays.push_back(std::move(vr));
+      ego_masks.push_back(std::move(ego));
     }
     gamma_lut.resize(kLutSize);
     for (int i = 0; i < kLutSize; ++i) {
@@ -546,7 +555,7 @@ struct Renderer::Impl {
   // What the ray of one pixel hit: the output of the tracing pass over a chunk of a row, the
   // input of its shading passes. Grouping the work by kind keeps each loop short and lets
   // the floor lookups (most pixels) run four at a time.
-  enum class Surface : uint8_t { kNone, kFloor, kCeiling, kWall, kBox };
+  enum class Surface : uint8_t { kNone, kFloor, kCeiling, kWall, kBox, kEgo };
   struct PixelHit {
     Eigen::Vector3f p, d;
     float footprint;  // metres; on the floor already divided by the slant
@@ -573,6 +582,7 @@ struct Renderer::Impl {
     const geometry::RigCamera& cam = rig.cameras.at(ci);
     const CameraRays& cr = (*rays).at(ci);
     const std::vector<VehicleRay>& vrays = vehicle_rays.at(ci);
+    const std::vector<uint8_t>& ego_mask = ego_masks.at(ci);
     const geometry::Rigid3 map_from_camera = pose.toRigid3() * cam.vehicle_from_camera;
     const Eigen::Vector3f o = map_from_camera.translation().cast<float>();
     const float cos_yaw = static_cast<float>(std::cos(pose.yaw));
@@ -619,6 +629,8 @@ struct Renderer::Impl {
 #endif
           for (int y = range.start; y < range.end; ++y) {
             const VehicleRay* row_rays = vrays.data() + static_cast<size_t>(y) * W;
+            const uint8_t* row_ego =
+                ego_mask.empty() ? nullptr : ego_mask.data() + static_cast<size_t>(y) * W;
             const size_t tile_row = static_cast<size_t>(y / kTile) * tiles_x;
             PixelHit* hits = buf.hits.data();
             // Sensor noise, drawn in pixel order from a generator seeded per row so rows can
@@ -639,6 +651,13 @@ struct Renderer::Impl {
               const auto record = [&](int x, const Eigen::Vector3f& d, float t, int surface,
                                       int hit_box, int hit_axis, float angle) {
                 PixelHit& h = hits[x];
+                if (row_ego && row_ego[x]) {  // the car's own body, in front of everything
+                  noise.gauss3(row_noise + 3 * x);
+                  h.p = o;
+                  h.d = d;
+                  h.surface = Surface::kEgo;
+                  return;
+                }
                 if (!(t > 0.0f && t < 1e4f)) return;  // camera outside the level: black
                 noise.gauss3(row_noise + 3 * x);
                 h.p = o + t * d;
@@ -917,7 +936,11 @@ struct Renderer::Impl {
   void shadeOther(const PixelHit& h, Eigen::Vector3f& albedo, float& e) const {
     const Eigen::Vector3f& p = h.p;
     const Eigen::Vector3f& d = h.d;
-    if (h.surface == Surface::kBox) {
+    if (h.surface == Surface::kEgo) {
+      // Dark paint lit by the floor around the car; its shape is not modelled further.
+      albedo = Eigen::Vector3f(0.16f, 0.17f, 0.19f);
+      e = 0.6f * floor_light_grid.at(p.x() * light_tpm, p.y() * light_tpm);
+    } else if (h.surface == Surface::kBox) {
       Eigen::Vector3f n = Eigen::Vector3f::Zero();
       n[h.axis] = d[h.axis] > 0 ? -1.0f : 1.0f;
       albedo = boxAlbedo(L.boxes[static_cast<size_t>(h.box)], p, d, n, h.footprint);

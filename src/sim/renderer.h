@@ -45,6 +45,7 @@ LightingOptions lightingForCondition(const std::string& condition, uint64_t seed
 
 class Renderer {
  public:
+  // A camera with a body (geometry::RigCamera::body) sees that body where its rays meet it.
   Renderer(const Garage& garage, int level, const geometry::Rig& rig,
            std::shared_ptr<const std::vector<CameraRays>> rays, const LightingOptions& light);
   ~Renderer();

@@ -75,7 +75,47 @@ TEST_F(CalibrationYamlTest, DefaultRigRoundTripsExactly) {
     EXPECT_LT(
         (a.vehicle_from_camera.matrix() - b.vehicle_from_camera.matrix()).cwiseAbs().maxCoeff(),
         1e-12);
+    ASSERT_TRUE(a.body);
+    ASSERT_TRUE(b.body) << b.name;
+    EXPECT_EQ(a.body->lo, b.body->lo);
+    EXPECT_EQ(a.body->hi, b.body->hi);
   }
+}
+
+TEST_F(CalibrationYamlTest, AFileWithoutAVehicleBodyGivesCamerasOnNoBody) {
+  const std::string path = write("rig.yaml", rigYaml(cameraYaml()));
+  EXPECT_FALSE(loadCalibration(path).cameras.at(0).body);
+}
+
+std::string bodyYaml(const std::string& min_data, const std::string& max_data) {
+  return "vehicle_body:\n"
+         "  min: !!opencv-matrix\n    rows: 3\n    cols: 1\n    dt: d\n    data: " +
+         min_data +
+         "\n"
+         "  max: !!opencv-matrix\n    rows: 3\n    cols: 1\n    dt: d\n    data: " +
+         max_data + "\n";
+}
+
+TEST_F(CalibrationYamlTest, AVehicleBodyIsReadIntoEveryCamera) {
+  const std::string path =
+      write("rig.yaml", rigYaml(cameraYaml("front") + cameraYaml("rear")) +
+                            bodyYaml("[ -1.0, -0.9, 0.1 ]", "[ 3.5, 0.9, 1.5 ]"));
+  const geometry::Rig rig = loadCalibration(path);
+  for (const auto& camera : rig.cameras) {
+    ASSERT_TRUE(camera.body) << camera.name;
+    EXPECT_EQ(camera.body->lo, Eigen::Vector3d(-1.0, -0.9, 0.1));
+    EXPECT_EQ(camera.body->hi, Eigen::Vector3d(3.5, 0.9, 1.5));
+  }
+}
+
+TEST_F(CalibrationYamlTest, AnEmptyOrMalformedVehicleBodyIsRejected) {
+  std::string message =
+      errorFor(rigYaml(cameraYaml()) + bodyYaml("[ -1.0, 0.9, 0.1 ]", "[ 3.5, 0.9, 1.5 ]"));
+  EXPECT_NE(message.find(": vehicle_body: field 'max': must exceed min on every axis"),
+            std::string::npos)
+      << message;
+  message = errorFor(rigYaml(cameraYaml()) + bodyYaml("[ -1.0, 0.9 ]", "[ 3.5, 0.9, 1.5 ]"));
+  EXPECT_NE(message.find(": vehicle_body: field 'min': "), std::string::npos) << message;
 }
 
 TEST_F(CalibrationYamlTest, PinholeCameraRoundTrips) {

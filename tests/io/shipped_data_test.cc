@@ -50,6 +50,9 @@ TEST(ShippedDataTest, DefaultRigFileIsTheDefaultRig) {
     EXPECT_LT(
         (a.vehicle_from_camera.matrix() - b.vehicle_from_camera.matrix()).cwiseAbs().maxCoeff(),
         1e-15);
+    ASSERT_TRUE(a.body) << a.name;
+    EXPECT_EQ(a.body->lo, b.body->lo);
+    EXPECT_EQ(a.body->hi, b.body->hi);
   }
 }
 

@@ -29,8 +29,10 @@ TEST(GroundView, ViewPixelsMapToTheRawPixelsOfTheirGroundPoints) {
         const auto px = view.rawFromView(cv::Point2f(c, r));
         if (!px || px->x < 1 || px->y < 1 || px->x > raw.cols - 2 || px->y > raw.rows - 2) continue;
         const cv::Point ip(cvRound(px->x), cvRound(px->y));
-        // Only where the nearest raw pixel is close to the sample point (no blending).
+        // Only where the nearest raw pixel is close to the sample point (little blending),
+        // and not next to where the coding wraps around (255 beside 0).
         if (std::abs(px->x - ip.x) > 0.1f || std::abs(px->y - ip.y) > 0.1f) continue;
+        if ((ip.x + 1) % 256 < 2 || (ip.y + 1) % 256 < 2) continue;
         EXPECT_EQ(rendered.at<cv::Vec3b>(r, c), raw.at<cv::Vec3b>(ip)) << camera.name;
         ++checked;
       }
@@ -87,6 +89,34 @@ TEST(GroundView, RawPixelsAboveTheHorizonHaveNoViewPixel) {
     const auto px = camera.model.project(camera.vehicle_from_camera.inverse() * above);
     ASSERT_TRUE(px && camera.model.inImage(*px)) << camera.name;
     EXPECT_FALSE(view.viewFromRaw(cv::Point2f(px->x(), px->y()))) << camera.name;
+  }
+}
+
+TEST(GroundView, TheFloorBehindTheCarsBodyIsLeftOutAndTheViewCroppedToWhatShows) {
+  for (const auto& camera : geometry::defaultRig().cameras) {
+    ASSERT_TRUE(camera.body) << camera.name;
+    geometry::RigCamera bare = camera;
+    bare.body.reset();
+    const GroundView view(camera), bare_view(bare);
+    const Eigen::Vector2d foot = camera.vehicle_from_camera.translation().head<2>();
+    const Eigen::Vector2d heading =
+        camera.vehicle_from_camera.linear().col(2).head<2>().normalized();
+    // Under the car, 0.4 m behind the camera, in the fisheye's field (wider than a
+    // half-space): not seen, and its pixel is the one that shows the body.
+    const Eigen::Vector2d under = foot - 0.4 * heading;
+    EXPECT_FALSE(view.seesTheFloorAt(view.viewFromGround(under))) << camera.name;
+    EXPECT_TRUE(view.rawFromView(view.viewFromGround(under))) << camera.name;
+    // The mirror cameras, looking down, have it in their image: only the body hides it.
+    if (camera.name == "left" || camera.name == "right") {
+      EXPECT_TRUE(bare_view.seesTheFloorAt(bare_view.viewFromGround(under))) << camera.name;
+    }
+    // The floor behind each camera is hidden, so the view is cut to the part ahead of it.
+    EXPECT_LT(view.size().area(), bare_view.size().area()) << camera.name;
+    // Two metres ahead of the camera, on its heading, stays in the view and seen.
+    const Eigen::Vector2d ahead = foot + 2.0 * heading;
+    const cv::Point2f p = view.viewFromGround(ahead);
+    EXPECT_TRUE(cv::Rect(cv::Point(0, 0), view.size()).contains(p)) << camera.name;
+    EXPECT_TRUE(view.seesTheFloorAt(p)) << camera.name;
   }
 }
 

@@ -278,7 +278,11 @@ TEST(PpOcrSpotterModels, AFloorBoxTakesTheClassOfTheTextsPlacedNearIt) {
 // the part matches and stands for its whole text, marked partial, its polygon on the part.
 TEST_F(PpOcrSpotterTest, ACutFloorNumberMatchesThePlacedTextByThePartThatShows) {
   SpotRequest request = leftFloorRequest({"B2-117", "A023"});
-  // Reading away from the car, its first character below the image's bottom edge.
+  // A camera on no car: reading away from it, the number's first character lies below the
+  // image's bottom edge.
+  geometry::RigCamera bare = *request.camera;
+  bare.body.reset();
+  request.camera = &bare;
   const Eigen::Vector2d centre(2.0, 0.7), reading(0.0, 1.0);
   const auto scene =
       testing::renderFloorText(*request.camera, "B2-117", centre, M_PI / 2, 1.2, 0.45);
@@ -291,6 +295,37 @@ TEST_F(PpOcrSpotterTest, ACutFloorNumberMatchesThePlacedTextByThePartThatShows) 
   EXPECT_TRUE(found[0].partial);
   EXPECT_EQ(found[0].text, "B2-117");
   for (const auto& p : found[0].polygon) EXPECT_LE(p.y, request.camera->model.height);
+}
+
+TEST_F(PpOcrSpotterTest, AFloorNumberCutByTheCarsBodyMatchesThePlacedTextByThePartThatShows) {
+  static const geometry::Rig rig = geometry::defaultRig();
+  SpotRequest request;
+  request.lexicon = request.floor_lexicon = {"B2-117", "A023"};
+  request.camera = rig.find("front");
+  const geometry::RigCamera& camera = *request.camera;
+  ASSERT_TRUE(camera.body);
+  // Beside the car, reading forwards, its first characters behind the front bumper's plane
+  // (x < 3.7 m), where the car hides them from the front camera.
+  const Eigen::Vector2d centre(3.85, 2.2), reading(1.0, 0.0);
+  auto scene = testing::renderFloorText(camera, "B2-117", centre, 0.0, 1.2, 0.45);
+  // The image shows the car where the body is in the way, as a camera on it sees it.
+  for (int y = 0; y < scene.image.rows; ++y)
+    for (int x = 0; x < scene.image.cols; ++x) {
+      const auto ray = camera.model.unproject(Eigen::Vector2d(x, y));
+      if (ray && geometry::bodyHitsRay(*camera.body, camera.vehicle_from_camera.translation(),
+                                       camera.vehicle_from_camera.linear() * *ray))
+        scene.image.at<cv::Vec3b>(y, x) = cv::Vec3b(70, 66, 62);
+    }
+  request.placed_floor_texts = {{"B2-117", centre, reading}, {"A023", {8.0, 2.2}, reading}};
+  const auto found = spotter_->spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_EQ(found[0].text, "B2-117");
+  // The box holds the part that shows: shorter than the whole number.
+  const auto length = [](const Quad& q) {
+    return static_cast<double>(cv::norm(0.5f * (q[1] + q[2]) - 0.5f * (q[0] + q[3])));
+  };
+  EXPECT_LT(length(found[0].polygon), 0.85 * length(scene.truth));
 }
 
 struct LeftFloorSpot {

@@ -283,28 +283,23 @@ std::vector<std::optional<TextInstance>> readJobs(
   return out;
 }
 
-// Whether a floor-view quad (reading order) may run out of the camera's image at its start and
-// at its end: a point a quarter of its length beyond that end is not in the image (pixel
-// centres 0 .. size - 1).
-std::pair<bool, bool> mayRunOutOfTheImage(const Quad& quad, const GroundView& view,
-                                          const geometry::CameraModel& model) {
+// Whether a floor-view quad (reading order) may run out of what the camera sees at its start
+// and at its end: a point a quarter of its length beyond that end is not in the image (pixel
+// centres 0 .. size - 1) or lies behind the vehicle's body.
+std::pair<bool, bool> mayRunOutOfSight(const Quad& quad, const GroundView& view) {
   const cv::Point2f start = 0.5f * (quad[0] + quad[3]), end = 0.5f * (quad[1] + quad[2]);
   const cv::Point2f beyond = 0.25f * (end - start);
-  auto seen = [&](const cv::Point2f& view_pixel) {
-    const auto raw = view.rawFromView(view_pixel);
-    return raw && model.inImage({raw->x, raw->y}, /*margin=*/0.5);
-  };
-  return {!seen(start - beyond), !seen(end + beyond)};
+  return {!view.seesTheFloorAt(start - beyond), !view.seesTheFloorAt(end + beyond)};
 }
 
 }  // namespace
 
 const GroundView& PpOcrSpotter::groundView(const geometry::RigCamera& camera) {
-  for (const auto& [name, view] : ground_views_)
-    if (name == camera.name) return *view;
-  ground_views_.emplace_back(camera.name,
-                             std::make_unique<GroundView>(camera, options_.ground_view));
-  return *ground_views_.back().second;
+  // Keyed by the whole calibration, not the name: two rigs may both have a "left" camera.
+  for (const auto& view : ground_views_)
+    if (geometry::sameCalibration(view->camera(), camera)) return *view;
+  ground_views_.push_back(std::make_unique<GroundView>(camera, options_.ground_view));
+  return *ground_views_.back();
 }
 
 std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
@@ -387,13 +382,12 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
           job.try_both_directions = false;
         }
       }
-      // A box that may be a number cut by the image border also decodes against the parts of
-      // the texts placed there that the cut would leave (only when it reads one way round:
-      // the cut end must be known).
+      // A box that may be a number cut by the image border or the vehicle's body also decodes
+      // against the parts of the texts placed there that the cut would leave (only when it reads
+      // one way round: the cut end must be known).
       if (request.narrow_to_placed_texts && !job.try_both_directions &&
           options_.min_cut_part_chars > 0 && !job.lexicon->empty()) {
-        const auto [at_start, at_end] =
-            mayRunOutOfTheImage(job.quad, *placing, request.camera->model);
+        const auto [at_start, at_end] = mayRunOutOfSight(job.quad, *placing);
         if (at_start || at_end) {
           cut_lexicons.push_back(withCutParts(*job.lexicon, at_start, at_end,
                                               static_cast<size_t>(options_.min_cut_part_chars)));

@@ -224,7 +224,7 @@ class PpOcrSpotter : public TextSpotter {
 
   PpOcrOptions options_;
   std::unique_ptr<Networks> nets_;
-  std::vector<std::pair<std::string, std::unique_ptr<GroundView>>> ground_views_;
+  std::vector<std::unique_ptr<GroundView>> ground_views_;  // one per camera calibration
 };
 
 // Throws InputError unless `image` is a non-empty 8-bit 3-channel image.

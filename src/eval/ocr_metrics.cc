@@ -57,6 +57,12 @@ Quad matchedPolygon(const io::LabelInstance& instance, const OcrEvaluationOption
   return io::pointQuad(instance.polygon);
 }
 
+std::optional<Quad> alternativePolygon(const io::LabelInstance& instance,
+                                       const OcrEvaluationOptions& options) {
+  if (options.inside_image_only && instance.visible_polygon) return io::pointQuad(instance.polygon);
+  return std::nullopt;
+}
+
 bool caredFor(const io::LabelInstance& instance, const OcrEvaluationOptions& options) {
   return instance.legible && instance.occluded_fraction < options.dont_care_occlusion;
 }
@@ -107,10 +113,12 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
                        const std::vector<ocr::TextInstance>& detections,
                        const std::vector<std::string>& image_conditions, double spotting_seconds) {
   std::vector<Quad> truth_quads, matched_quads, detection_quads;
+  std::vector<std::optional<Quad>> alternative_quads;
   std::vector<bool> dont_care, dont_care_by_height;
   for (const io::LabelInstance& instance : truth.instances) {
     truth_quads.push_back(io::pointQuad(instance.polygon));
     matched_quads.push_back(matchedPolygon(instance, options_));
+    alternative_quads.push_back(alternativePolygon(instance, options_));
     const bool occluded = instance.occluded_fraction >= options_.dont_care_occlusion;
     dont_care.push_back(!caredFor(instance, options_));
     dont_care_by_height.push_back(occluded ||
@@ -130,14 +138,17 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
     return out;
   };
   const MatchingOptions matching = matchingFor(options_, truth);
-  countMatching(truth, detections, truth_quads, detection_quads, dont_care,
-                matchDetections(matched_quads, dont_care, detection_quads, matching), buckets);
+  countMatching(
+      truth, detections, truth_quads, detection_quads, dont_care,
+      matchDetections(matched_quads, alternative_quads, dont_care, detection_quads, matching),
+      buckets);
 
   auto by_class = [&](map::TextClass cls, const Quad&, const double*) {
     return std::vector<OcrCounts*>{&result_.height_rule_by_class[map::toString(cls)]};
   };
   countMatching(truth, detections, truth_quads, detection_quads, dont_care_by_height,
-                matchDetections(matched_quads, dont_care_by_height, detection_quads, matching),
+                matchDetections(matched_quads, alternative_quads, dont_care_by_height,
+                                detection_quads, matching),
                 by_class);
   ++result_.images;
   result_.spotting_seconds += spotting_seconds;

@@ -93,6 +93,10 @@ MatchingOptions matchingFor(const OcrEvaluationOptions& options, const io::Image
 // image's edge or partly hidden (io::LabelInstance::visible_polygon) when `inside_image_only`,
 // else the label's.
 Quad matchedPolygon(const io::LabelInstance& instance, const OcrEvaluationOptions& options);
+// The other polygon a detection may match: the whole text's where matchedPolygon is the part
+// that shows (a detector may box either); empty otherwise.
+std::optional<Quad> alternativePolygon(const io::LabelInstance& instance,
+                                       const OcrEvaluationOptions& options);
 
 // Whether a label counts in the tables: legible and less than dont_care_occlusion occluded.
 bool caredFor(const io::LabelInstance& instance, const OcrEvaluationOptions& options);

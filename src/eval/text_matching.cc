@@ -24,14 +24,27 @@ ImageMatching matchDetections(const std::vector<Quad>& truth_quads,
                               const std::vector<bool>& dont_care,
                               const std::vector<Quad>& detection_quads,
                               const MatchingOptions& options) {
+  return matchDetections(truth_quads, {}, dont_care, detection_quads, options);
+}
+
+ImageMatching matchDetections(const std::vector<Quad>& truth_quads,
+                              const std::vector<std::optional<Quad>>& alternative_quads,
+                              const std::vector<bool>& dont_care,
+                              const std::vector<Quad>& detection_quads,
+                              const MatchingOptions& options) {
   assert(dont_care.size() == truth_quads.size());
+  assert(alternative_quads.empty() || alternative_quads.size() == truth_quads.size());
   const auto truths = compared(truth_quads, options);
   const auto detections = compared(detection_quads, options);
+  std::vector<std::optional<std::vector<cv::Point2f>>> alternatives(truths.size());
+  for (size_t t = 0; t < alternative_quads.size(); ++t)
+    if (alternative_quads[t]) alternatives[t] = compared({*alternative_quads[t]}, options).front();
   std::vector<MatchedPair> candidates, nearest(truths.size());
   for (size_t t = 0; t < truths.size(); ++t) {
     if (dont_care[t]) continue;
     for (size_t d = 0; d < detections.size(); ++d) {
-      const double iou = polygonIoU(truths[t], detections[d]);
+      double iou = polygonIoU(truths[t], detections[d]);
+      if (alternatives[t]) iou = std::max(iou, polygonIoU(*alternatives[t], detections[d]));
       if (iou >= options.min_iou) candidates.push_back({t, d, iou});
       if (iou > nearest[t].iou) nearest[t] = {t, d, iou};
     }

@@ -23,6 +23,25 @@ TEST(TextMatching, ATextCutByTheImageBorderMatchesItsVisiblePart) {
   EXPECT_TRUE(m.false_detections.empty());
 }
 
+TEST(TextMatching, APartlyHiddenTextMatchesADetectionOfItsVisiblePartOrOfTheWholeText) {
+  // A car hides the top 60 % of a 100 x 20 px number: the label's visible part is the strip
+  // y 12..20, the whole text y 0..20.
+  const std::vector<Quad> shown = {box(0, 12, 100, 20)};
+  const std::vector<std::optional<Quad>> whole = {box(0, 0, 100, 20)};
+  const std::vector<Quad> of_the_whole = {box(0, 1, 100, 20)};  // IoU 0.42 with the strip
+  EXPECT_TRUE(matchDetections(shown, {false}, of_the_whole).matches.empty());
+  ImageMatching m = matchDetections(shown, whole, {false}, of_the_whole);
+  ASSERT_EQ(m.matches.size(), 1u);
+  EXPECT_NEAR(m.matches[0].iou, 0.95, 1e-6);
+  // A box of the strip matches through the strip itself; one of neither does not match.
+  m = matchDetections(shown, whole, {false}, {box(0, 12, 100, 20)});
+  ASSERT_EQ(m.matches.size(), 1u);
+  EXPECT_NEAR(m.matches[0].iou, 1.0, 1e-6);
+  m = matchDetections(shown, whole, {false}, {box(0, 0, 45, 20)});
+  EXPECT_TRUE(m.matches.empty());
+  EXPECT_EQ(m.false_detections.size(), 1u);
+}
+
 TEST(TextMatching, OneToOneAtIoUHalf) {
   const std::vector<Quad> truths = {box(0, 0, 10, 10), box(100, 0, 110, 10)};
   // d0 on t0 (IoU 0.81), d1 a duplicate of t0 (IoU 0.64, must not match twice), d2 far off.

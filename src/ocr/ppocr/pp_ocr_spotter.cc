@@ -306,8 +306,10 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                                                       const SpotRequest& request,
                                                       const geometry::RigCamera* camera,
                                                       DetectorRole role) {
+  // A floor view's scale is its resolution, chosen for the floor detector: a view wider than
+  // detection_max_side (+-8 m at 1.5 cm) is not shrunk.
   const double fit =
-      role == DetectorRole::kRawBand
+      role == DetectorRole::kRawBand || role == DetectorRole::kFloorView
           ? 1.0
           : std::min(1.0, options_.detection_max_side / double(std::max(image.cols, image.rows)));
   const double scale = fit * std::clamp(static_cast<double>(request.detection_scale), 0.1, 1.0);

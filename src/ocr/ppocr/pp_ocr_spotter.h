@@ -130,7 +130,8 @@ struct PpOcrOptions {
     o.unclip_ratio = 2.0;
     return o;
   }();
-  // Full-frame detection input: the longer side is scaled to this (multiple of 32).
+  // Full-frame detection input on a raw image: the longer side is scaled to this (multiple of
+  // 32). A floor view is detected at its own resolution (GroundViewOptions::resolution).
   int detection_max_side = 960;
   int recognition_max_width = CtcRecognizer::kMaxWidth;  // crops are kHeight px tall
   int recognition_batch = 8;
@@ -215,8 +216,8 @@ class PpOcrSpotter : public TextSpotter {
   std::vector<TextInstance> readRegions(const cv::Mat& image, const SpotRequest& request);
 
   // Which detector looks at the image: PaddleOCR's on a raw image (scaled to
-  // detection_max_side), the floor detector on a floor view, the band detector on a raw
-  // image's horizon band (at full resolution).
+  // detection_max_side), the floor detector on a floor view (at the view's resolution), the
+  // band detector on a raw image's horizon band (at full resolution).
   enum class DetectorRole { kScene, kFloorView, kRawBand };
   std::vector<TextInstance> detectAndRead(const cv::Mat& image, const SpotRequest& request,
                                           const geometry::RigCamera* camera, DetectorRole role);

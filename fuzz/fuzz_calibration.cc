@@ -29,6 +29,10 @@ void checkRig(const parkloc::geometry::Rig& rig) {
           "extrinsics not finite");
     check((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() < 1e-5 && R.determinant() > 0,
           "extrinsic rotation not a rotation");
+    if (camera.body)
+      check(camera.body->lo.allFinite() && camera.body->hi.allFinite() &&
+                (camera.body->lo.array() < camera.body->hi.array()).all(),
+            "vehicle body not a finite box");
   }
 }
 
@@ -49,8 +53,11 @@ static void fuzzOne(const uint8_t* data, size_t size) {
           [&] { again = parkloc::io::loadCalibration(saved.path()); }))
     parkloc::fuzz::violation("a saved calibration does not load again");
   check(again.cameras.size() == rig.cameras.size(), "round trip changed the number of cameras");
-  for (size_t i = 0; i < rig.cameras.size(); ++i)
+  for (size_t i = 0; i < rig.cameras.size(); ++i) {
     check(again.cameras[i].name == rig.cameras[i].name, "round trip changed a camera name");
+    check(again.cameras[i].body.has_value() == rig.cameras[i].body.has_value(),
+          "round trip lost or made a vehicle body");
+  }
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

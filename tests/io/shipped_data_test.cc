@@ -101,6 +101,8 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenFile{"duplicate_camera.yaml", "camera 'front': field 'name': duplicate camera name"},
         BrokenFile{"not_orthonormal.yaml",
                    "camera 'front': field 'T_vehicle_camera': rotation part is not orthonormal"},
+        BrokenFile{"inverted_vehicle_body.yaml",
+                   "vehicle_body: field 'max': must exceed min on every axis"},
         BrokenFile{"unparseable.yaml", "cannot parse YAML"}));
 
 class BrokenMap : public ::testing::TestWithParam<BrokenFile> {};

@@ -33,17 +33,7 @@ double msSince(Clock::time_point start) {
 std::vector<int> detectionCorrectness(const io::ImageLabels& labels,
                                       const std::vector<ocr::TextInstance>& detections,
                                       const OcrEvaluationOptions& options) {
-  std::vector<Quad> truths, found;
-  std::vector<std::optional<Quad>> alternatives;
-  std::vector<bool> dont_care;
-  for (const auto& l : labels.instances) {
-    truths.push_back(matchedPolygon(l, options));
-    alternatives.push_back(alternativePolygon(l, options));
-    dont_care.push_back(l.occluded_fraction >= options.dont_care_occlusion || !l.legible);
-  }
-  for (const auto& d : detections) found.push_back(d.polygon);
-  const ImageMatching m =
-      matchDetections(truths, alternatives, dont_care, found, matchingFor(options, labels));
+  const ImageMatching m = matchLabels(labels, detections, options);
   std::vector<int> out(detections.size(), 0);
   for (const MatchedPair& p : m.matches) {
     out[p.detection] = detections[p.detection].text == labels.instances[p.truth].text ? 1 : 0;

@@ -67,6 +67,22 @@ bool caredFor(const io::LabelInstance& instance, const OcrEvaluationOptions& opt
   return instance.legible && instance.occluded_fraction < options.dont_care_occlusion;
 }
 
+ImageMatching matchLabels(const io::ImageLabels& labels,
+                          const std::vector<ocr::TextInstance>& detections,
+                          const OcrEvaluationOptions& options) {
+  std::vector<Quad> truth_quads, detection_quads;
+  std::vector<std::optional<Quad>> alternative_quads;
+  std::vector<bool> dont_care;
+  for (const io::LabelInstance& instance : labels.instances) {
+    truth_quads.push_back(matchedPolygon(instance, options));
+    alternative_quads.push_back(alternativePolygon(instance, options));
+    dont_care.push_back(!caredFor(instance, options));
+  }
+  for (const ocr::TextInstance& d : detections) detection_quads.push_back(d.polygon);
+  return matchDetections(truth_quads, alternative_quads, dont_care, detection_quads,
+                         matchingFor(options, labels));
+}
+
 namespace {
 
 // The counts of one image's matching: each cared-for truth, match, miss and false detection

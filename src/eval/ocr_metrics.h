@@ -101,6 +101,12 @@ std::optional<Quad> alternativePolygon(const io::LabelInstance& instance,
 // Whether a label counts in the tables: legible and less than dont_care_occlusion occluded.
 bool caredFor(const io::LabelInstance& instance, const OcrEvaluationOptions& options);
 
+// One image's detections matched to its labels as the tables match them: each label by its
+// matchedPolygon or alternativePolygon, those not caredFor as don't care.
+ImageMatching matchLabels(const io::ImageLabels& labels,
+                          const std::vector<ocr::TextInstance>& detections,
+                          const OcrEvaluationOptions& options);
+
 // The bins of OcrEvaluation::parking_numbers_by_height, in increasing order, and the bin of
 // an apparent height (geometry::apparentHeightPx, the simulator's legibility measure).
 const std::vector<std::string>& heightBins();

@@ -29,17 +29,7 @@ std::string toString(OutcomeKind kind) {
 std::vector<TextOutcome> textOutcomes(const io::ImageLabels& truth,
                                       const std::vector<ocr::TextInstance>& detections,
                                       const OcrEvaluationOptions& options) {
-  std::vector<Quad> truth_quads, detection_quads;
-  std::vector<std::optional<Quad>> alternative_quads;
-  std::vector<bool> dont_care;
-  for (const io::LabelInstance& instance : truth.instances) {
-    truth_quads.push_back(matchedPolygon(instance, options));
-    alternative_quads.push_back(alternativePolygon(instance, options));
-    dont_care.push_back(!caredFor(instance, options));
-  }
-  for (const ocr::TextInstance& d : detections) detection_quads.push_back(d.polygon);
-  const ImageMatching m = matchDetections(truth_quads, alternative_quads, dont_care,
-                                          detection_quads, matchingFor(options, truth));
+  const ImageMatching m = matchLabels(truth, detections, options);
 
   std::vector<TextOutcome> out;
   for (const MatchedPair& p : m.matches)

@@ -40,14 +40,12 @@ GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOption
   // detector's time goes with the view's area, and the floor under the vehicle's body and,
   // for the front and rear cameras, beside it is hidden. The margin keeps a number that the
   // body cuts off the view's edge, where the detector finds text worse.
-  const auto& model = camera.model;
   cv::Mat seen(size(), CV_8U, cv::Scalar(0));
   for (int r = 0; r < seen.rows; ++r)
     for (int c = 0; c < seen.cols; ++c) {
-      const float x = map_x_.at<float>(r, c), y = map_y_.at<float>(r, c);
-      seen.at<uint8_t>(r, c) = x >= 0.f && y >= 0.f && x <= model.width - 1.f &&
-                               y <= model.height - 1.f &&
-                               !hiddenByTheBody(groundFromView(cv::Point2f(c, r)));
+      const cv::Point2f view_pixel(c, r);
+      const cv::Point2f raw(map_x_.at<float>(r, c), map_y_.at<float>(r, c));
+      seen.at<uint8_t>(r, c) = seesTheFloor(raw, groundFromView(view_pixel));
     }
   constexpr int kMarginPx = 32;
   const cv::Rect box = (cv::boundingRect(seen) + cv::Size(2 * kMarginPx, 2 * kMarginPx) -
@@ -95,10 +93,15 @@ bool GroundView::hiddenByTheBody(const Eigen::Vector2d& vehicle_xy) const {
                               Eigen::Vector3d(vehicle_xy.x(), vehicle_xy.y(), 0.0));
 }
 
+bool GroundView::seesTheFloor(const cv::Point2f& raw_pixel,
+                              const Eigen::Vector2d& vehicle_xy) const {
+  return camera_.model.inImage({raw_pixel.x, raw_pixel.y}, /*margin=*/0.5) &&
+         !hiddenByTheBody(vehicle_xy);
+}
+
 bool GroundView::seesTheFloorAt(const cv::Point2f& view_pixel) const {
   const auto raw = rawFromView(view_pixel);
-  return raw && camera_.model.inImage({raw->x, raw->y}, /*margin=*/0.5) &&
-         !hiddenByTheBody(groundFromView(view_pixel));
+  return raw && seesTheFloor(*raw, groundFromView(view_pixel));
 }
 
 std::optional<cv::Point2f> GroundView::rawFromView(const cv::Point2f& v) const {

@@ -50,6 +50,8 @@ class GroundView {
 
  private:
   bool hiddenByTheBody(const Eigen::Vector2d& vehicle_xy) const;
+  // seesTheFloorAt for a view pixel's raw pixel (pixel centres 0 .. size - 1) and ground point.
+  bool seesTheFloor(const cv::Point2f& raw_pixel, const Eigen::Vector2d& vehicle_xy) const;
   void buildMaps(int cols, int rows);  // from origin_, right_, toward_
 
   geometry::RigCamera camera_;

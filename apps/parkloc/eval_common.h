@@ -49,7 +49,8 @@ struct SpotterArgs {
   float min_text_confidence = ocr::PpOcrOptions{}.min_text_confidence;
   float unplaced_class_weight = ocr::PpOcrOptions{}.unplaced_class_weight;
   double placed_open_world_weight = ocr::PpOcrOptions{}.placed_lexicon.open_world_weight;
-  bool reread_unmatched = false;
+  bool reread_unmatched = !ocr::PpOcrOptions{}.reread_margins.empty();
+  bool reread_by_both_recognizers = !ocr::PpOcrOptions{}.reread_by_fallback_only;
   std::vector<float> floor_read_expand = {ocr::PpOcrOptions{}.floor_read_expand_x,
                                           ocr::PpOcrOptions{}.floor_read_expand_y};
 
@@ -121,9 +122,13 @@ struct SpotterArgs {
                     "against the texts the map places near a floor box")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
-    cmd->add_flag("--reread-unmatched", reread_unmatched,
+    cmd->add_flag("--reread-unmatched,!--no-reread-unmatched", reread_unmatched,
                   "Under a predicted pose, read a floor box that matched no placed text again "
-                  "with other margins (more numbers read, about a third more time)");
+                  "with other margins, by the fallback recognizer")
+        ->capture_default_str();
+    cmd->add_flag("--reread-by-both-recognizers", reread_by_both_recognizers,
+                  "... by the first recognizer too (a third more time an image, hardly more "
+                  "read)");
     cmd->add_option("--floor-read-expand", floor_read_expand,
                     "Floor detector: its boxes are read from a crop grown by these factors "
                     "(along, across the text)")
@@ -154,7 +159,8 @@ inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   options.min_text_confidence = args.min_text_confidence;
   options.unplaced_class_weight = args.unplaced_class_weight;
   options.placed_lexicon.open_world_weight = args.placed_open_world_weight;
-  if (args.reread_unmatched) options.reread_margins = ocr::kRereadMargins;
+  if (!args.reread_unmatched) options.reread_margins.clear();
+  options.reread_by_fallback_only = !args.reread_by_both_recognizers;
   options.floor_read_expand_x = args.floor_read_expand.at(0);
   options.floor_read_expand_y = args.floor_read_expand.at(1);
   if (!args.classifier.empty() && std::filesystem::exists(args.classifier)) {

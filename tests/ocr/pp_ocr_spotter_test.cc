@@ -365,25 +365,54 @@ TEST(PpOcrSpotterModels, TheTunedFloorDetectorReadsFloorTextThroughTheFisheye) {
   expectTheNumberMatchedAndFitted(spot);
 }
 
-// A placed box that no reading matched is read again with the margins of reread_margins: read
-// from a crop that cuts into its glyphs, the number matches only when read again.
-TEST(PpOcrSpotterModels, AnUnmatchedPlacedBoxIsReadAgainWithOtherMargins) {
-  PpOcrOptions options;
-  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+// B2-117 on the left camera's floor, placed there, its box read from a crop that cuts a third
+// of the number off, its top and bottom too; the spotter's instances without and with
+// kRereadMargins.
+struct RereadOutcome {
+  std::vector<TextInstance> without, with;
+};
+RereadOutcome spotACutCropWithoutAndWithRereading(PpOcrOptions options) {
   options.models.floor_detection = floorDetectorIn(PARKLOC_MODEL_DIR);
-  options.floor_read_expand_x = 0.7f;  // a third of the number cut off, its top and bottom too
+  options.floor_read_expand_x = 0.7f;
   options.floor_read_expand_y = 0.6f;
   SpotRequest request = leftFloorRequest({"B2-117", "A023"});
   const cv::Mat image =
       testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45).image;
   request.placed_floor_texts = {{"B2-117", {2.0, 2.6}, {-1.0, 0.0}}};
-  auto found = PpOcrSpotter(options).spot(image, request);
-  for (const TextInstance& inst : found) EXPECT_FALSE(inst.lexicon_match);
+  RereadOutcome out;
+  options.reread_margins.clear();
+  out.without = PpOcrSpotter(options).spot(image, request);
   options.reread_margins = kRereadMargins;
-  found = PpOcrSpotter(options).spot(image, request);
-  ASSERT_EQ(found.size(), 1u);
-  EXPECT_TRUE(found[0].lexicon_match);
-  EXPECT_EQ(found[0].text, "B2-117");
+  out.with = PpOcrSpotter(options).spot(image, request);
+  return out;
+}
+
+// A placed box that no reading matched is read again with the margins of reread_margins: the
+// number matches only when read again.
+TEST(PpOcrSpotterModels, AnUnmatchedPlacedBoxIsReadAgainWithOtherMargins) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  const auto spot = spotACutCropWithoutAndWithRereading(options);
+  for (const TextInstance& inst : spot.without) EXPECT_FALSE(inst.lexicon_match);
+  ASSERT_EQ(spot.with.size(), 1u);
+  EXPECT_TRUE(spot.with[0].lexicon_match);
+  EXPECT_EQ(spot.with[0].text, "B2-117");
+  EXPECT_FALSE(spot.with[0].second_opinion);  // no fallback recognizer: the first read them
+}
+
+// With a fallback recognizer the margins are read by it alone (reread_by_fallback_only): the
+// match is its second opinion. Without the margins neither recognizer matches the cut crop.
+TEST(PpOcrSpotterModels, TheFallbackRecognizerAloneReadsTheMarginsWhenThereIsOne) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.models.fallback_recognition = tunedRecognizerIn(PARKLOC_MODEL_DIR);
+  ASSERT_TRUE(options.reread_by_fallback_only);
+  const auto spot = spotACutCropWithoutAndWithRereading(options);
+  for (const TextInstance& inst : spot.without) EXPECT_FALSE(inst.lexicon_match);
+  ASSERT_EQ(spot.with.size(), 1u);
+  EXPECT_TRUE(spot.with[0].lexicon_match);
+  EXPECT_EQ(spot.with[0].text, "B2-117");
+  EXPECT_TRUE(spot.with[0].second_opinion);
 }
 
 // A box read against the texts placed near it decodes under PpOcrOptions::placed_lexicon, one

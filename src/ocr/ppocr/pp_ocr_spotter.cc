@@ -245,7 +245,8 @@ std::vector<std::optional<TextInstance>> readJobs(
   }
 
   // A box read against the texts placed near it, one way round, that nothing matched yet is
-  // read again from crops with other margins, by each recognizer.
+  // read again from crops with other margins, by the fallback recognizer (and the first, unless
+  // PpOcrOptions::reread_by_fallback_only).
   CropBatch margins;
   for (size_t i = 0; i < jobs.size(); ++i) {
     if (!unmatched(i) || !jobs[i].placed || jobs[i].try_both_directions) continue;
@@ -255,7 +256,8 @@ std::vector<std::optional<TextInstance>> readJobs(
                         CtcRecognizer::kMinWidth, options.recognition_max_width),
           i, false);
   }
-  decodeAll(margins, recognizer, false);
+  if (fallback_recognizer == nullptr || !options.reread_by_fallback_only)
+    decodeAll(margins, recognizer, false);
   if (fallback_recognizer != nullptr) decodeAll(margins, *fallback_recognizer, true);
 
   std::vector<std::optional<TextInstance>> out(jobs.size());

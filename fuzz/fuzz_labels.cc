@@ -20,6 +20,7 @@ static void fuzzOne(const uint8_t* data, size_t size) {
     for (const auto& p : inst.polygon) check(p.allFinite(), "non-finite polygon point");
     check(std::isfinite(inst.occluded_fraction) && std::isfinite(inst.rotation_deg),
           "non-finite instance field");
+    check(inst.paint_wear >= 0.0 && inst.paint_wear <= 1.0, "paint wear outside [0, 1]");
   }
   parkloc::io::saveLabels(labels, saved.path());
   parkloc::io::saveIcdarLabels(labels, icdar.path());
@@ -31,7 +32,8 @@ static void fuzzOne(const uint8_t* data, size_t size) {
         "round trip changed the labels");
   for (size_t i = 0; i < labels.instances.size(); ++i)
     check(again.instances[i].text == labels.instances[i].text &&
-              again.instances[i].polygon == labels.instances[i].polygon,
+              again.instances[i].polygon == labels.instances[i].polygon &&
+              again.instances[i].paint_wear == labels.instances[i].paint_wear,
           "round trip changed an instance");
 }
 

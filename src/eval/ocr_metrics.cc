@@ -37,6 +37,13 @@ const std::string& heightBin(double h) {
   return bins[i];
 }
 
+const std::vector<std::string>& paintBins() {
+  static const std::vector<std::string> kBins = {"intact paint", "worn paint"};
+  return kBins;
+}
+
+const std::string& paintBin(double paint_wear) { return paintBins()[paint_wear > 0.0 ? 1 : 0]; }
+
 double readingAngleDeg(const Quad& polygon) {
   // Mid-point of the left edge to mid-point of the right edge: the reading direction.
   const cv::Point2d left = 0.5 * (cv::Point2d(polygon[0]) + cv::Point2d(polygon[3]));
@@ -86,7 +93,7 @@ ImageMatching matchLabels(const io::ImageLabels& labels,
 namespace {
 
 // The counts of one image's matching: each cared-for truth, match, miss and false detection
-// goes to every tally `buckets(class, polygon, rotation or nullptr)` names.
+// goes to every tally `buckets(class, polygon, label or nullptr)` names.
 template <typename Buckets>
 void countMatching(const io::ImageLabels& truth, const std::vector<ocr::TextInstance>& detections,
                    const std::vector<Quad>& truth_quads, const std::vector<Quad>& detection_quads,
@@ -95,13 +102,13 @@ void countMatching(const io::ImageLabels& truth, const std::vector<ocr::TextInst
   for (size_t t = 0; t < truth.instances.size(); ++t) {
     if (dont_care[t]) continue;
     const io::LabelInstance& gt = truth.instances[t];
-    for (OcrCounts* c : buckets(gt.cls, truth_quads[t], &gt.rotation_deg)) ++c->truths;
+    for (OcrCounts* c : buckets(gt.cls, truth_quads[t], &gt)) ++c->truths;
   }
   for (const MatchedPair& m : matching.matches) {
     const io::LabelInstance& gt = truth.instances[m.truth];
     const ocr::TextInstance& d = detections[m.detection];
     const std::string& raw = d.raw_text.empty() ? d.text : d.raw_text;
-    for (OcrCounts* c : buckets(gt.cls, truth_quads[m.truth], &gt.rotation_deg)) {
+    for (OcrCounts* c : buckets(gt.cls, truth_quads[m.truth], &gt)) {
       ++c->detections;
       ++c->tp;
       c->iou_sum += m.iou;
@@ -112,7 +119,7 @@ void countMatching(const io::ImageLabels& truth, const std::vector<ocr::TextInst
   }
   for (size_t t : matching.missed_truths) {
     const io::LabelInstance& gt = truth.instances[t];
-    for (OcrCounts* c : buckets(gt.cls, truth_quads[t], &gt.rotation_deg)) ++c->fn;
+    for (OcrCounts* c : buckets(gt.cls, truth_quads[t], &gt)) ++c->fn;
   }
   // A false detection has no truth: its predicted class and its own reading angle place it.
   for (size_t d : matching.false_detections) {
@@ -143,14 +150,16 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
   for (const ocr::TextInstance& d : detections) detection_quads.push_back(d.polygon);
 
   // Every count goes to the overall tally, its class and each subset it belongs to.
-  auto buckets = [&](map::TextClass cls, const Quad& polygon, const double* rotation_deg) {
+  auto buckets = [&](map::TextClass cls, const Quad& polygon, const io::LabelInstance* label) {
     std::vector<OcrCounts*> out = {&result_.overall, &result_.by_class[map::toString(cls)]};
     for (const std::string& c : image_conditions) out.push_back(&result_.by_condition[c]);
-    const double angle = rotation_deg ? *rotation_deg : readingAngleDeg(polygon);
+    const double angle = label ? label->rotation_deg : readingAngleDeg(polygon);
     if (const auto rot = rotationSubset(angle)) out.push_back(&result_.by_condition[*rot]);
-    if (cls == map::TextClass::kParkingNumber)
+    if (cls == map::TextClass::kParkingNumber) {
       out.push_back(&result_.parking_numbers_by_height[heightBin(
           geometry::apparentHeightPx(io::textPolygon(polygon)))]);
+      if (label) out.push_back(&result_.parking_numbers_by_paint[paintBin(label->paint_wear)]);
+    }
     return out;
   };
   const MatchingOptions matching = matchingFor(options_, truth);
@@ -159,7 +168,7 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
       matchDetections(matched_quads, alternative_quads, dont_care, detection_quads, matching),
       buckets);
 
-  auto by_class = [&](map::TextClass cls, const Quad&, const double*) {
+  auto by_class = [&](map::TextClass cls, const Quad&, const io::LabelInstance*) {
     return std::vector<OcrCounts*>{&result_.height_rule_by_class[map::toString(cls)]};
   };
   countMatching(truth, detections, truth_quads, detection_quads, dont_care_by_height,

@@ -58,6 +58,9 @@ struct OcrEvaluation {
   // Parking numbers by apparent height in the image (heightBin): what the size of a
   // number costs.
   std::map<std::string, OcrCounts> parking_numbers_by_height;
+  // Parking numbers by their paint (paintBin of io::LabelInstance::paint_wear): intact or worn.
+  // A false detection has no paint and counts in none (added later).
+  std::map<std::string, OcrCounts> parking_numbers_by_paint;
   // Per class, with every text at least kHeightRuleMinPx tall cared for (unless half
   // occluded), whatever its label's legibility: the simulator's rule until session 6, kept
   // so that figures compare across the change to the blur- and pitch-aware rule.
@@ -111,6 +114,10 @@ ImageMatching matchLabels(const io::ImageLabels& labels,
 // an apparent height (geometry::apparentHeightPx, the simulator's legibility measure).
 const std::vector<std::string>& heightBins();
 const std::string& heightBin(double height_px);
+
+// The bins of OcrEvaluation::parking_numbers_by_paint and the bin of a label's paint wear.
+const std::vector<std::string>& paintBins();
+const std::string& paintBin(double paint_wear);
 
 // Reading direction of a polygon in the image, degrees in (-180, 180] (0 = left to right),
 // the same convention as io::LabelInstance::rotation_deg.

@@ -99,59 +99,65 @@ const std::vector<std::string> kSubsetHeader = {
     "Subset",   "Instances",         "Detection TP",          "Detection FP",  "F-measure",
     "Mean IoU", "Recognition (raw)", "Recognition (lexicon)", "Classification"};
 
-// One subsetRow per name, in order; `title` names the row.
-template <typename Title>
-void addSubsetRows(Table& t, const std::vector<std::string>& names,
-                   const std::map<std::string, OcrCounts>& counts, const Title& title) {
+std::string asIs(const std::string& name) { return name; }
+
+// A table of Table 3's columns with one row per subset: `names` in order, each titled by
+// `title`, the first column headed `first_column`.
+template <typename Title = std::string (*)(const std::string&)>
+Table subsetTable(const std::string& key, const std::string& heading, const std::string& caption,
+                  const std::string& first_column, const std::vector<std::string>& names,
+                  const std::map<std::string, OcrCounts>& counts, const Title& title = asIs) {
+  Table t;
+  t.key = key;
+  t.title = heading;
+  t.caption = caption;
+  t.header = kSubsetHeader;
+  t.header[0] = first_column;
   for (const std::string& name : names) {
     const auto it = counts.find(name);
     t.rows.push_back(
         subsetRow(title(name), it == counts.end() ? nullptr : &it->second, t.header.size()));
   }
+  return t;
 }
-
-std::string asIs(const std::string& name) { return name; }
 
 }  // namespace
 
 Table table3Conditions(const OcrEvaluation& ocr) {
-  Table t;
-  t.key = "table3_conditions";
-  t.title = "Table 3 by condition: text spotting per subset";
-  t.caption =
-      "Light and blur per sequence; rotation per instance (|reading direction| in the "
-      "image within 30-60, 60-120 or 150-180 degrees).";
-  t.header = kSubsetHeader;
-  addSubsetRows(t, conditionNames(), ocr.by_condition, conditionTitle);
-  return t;
+  return subsetTable(
+      "table3_conditions", "Table 3 by condition: text spotting per subset",
+      "Light and blur per sequence; rotation per instance (|reading direction| in the image "
+      "within 30-60, 60-120 or 150-180 degrees).",
+      "Subset", conditionNames(), ocr.by_condition, conditionTitle);
 }
 
 Table table3Heights(const OcrEvaluation& ocr) {
-  Table t;
-  t.key = "table3_heights";
-  t.title = "Table 3 by size: parking numbers per apparent height";
-  t.caption =
+  return subsetTable(
+      "table3_heights", "Table 3 by size: parking numbers per apparent height",
       "Apparent height = polygon area over reading length, in image pixels (the truth's for "
       "instances and misses, the detection's own for false detections). Only instances "
-      "labelled legible are counted (8 px tall at least, 2 cycles per character after blur).";
-  t.header = kSubsetHeader;
-  t.header[0] = "Height";
-  addSubsetRows(t, heightBins(), ocr.parking_numbers_by_height, asIs);
-  return t;
+      "labelled legible are counted (8 px tall at least, 2 cycles per character after blur).",
+      "Height", heightBins(), ocr.parking_numbers_by_height);
+}
+
+Table table3Paint(const OcrEvaluation& ocr) {
+  return subsetTable(
+      "table3_paint", "Table 3 by paint: parking numbers with intact and worn paint",
+      "Worn: the simulator erased part of the number's paint (the labels' paint_wear > 0). A "
+      "false detection has no paint and counts in neither row, so their detection FP is 0 and "
+      "their F-measure counts no false detection: compare the TP, recognition and "
+      "classification columns.",
+      "Paint", paintBins(), ocr.parking_numbers_by_paint);
 }
 
 Table table3HeightRule(const OcrEvaluation& ocr) {
-  Table t;
-  t.key = "table3_height_rule";
-  t.title = "Table 3 under the height-only rule: every text 8 px or taller cared for";
-  t.caption =
+  return subsetTable(
+      "table3_height_rule",
+      "Table 3 under the height-only rule: every text 8 px or taller cared for",
       "The simulator's legibility rule until session 6: text at least 8 px tall (apparent "
       "height) and less than half occluded is cared for, however squeezed along its reading "
-      "direction or smeared by blur. The tables above follow the labels' legible flag.";
-  t.header = kSubsetHeader;
-  t.header[0] = "Class";
-  addSubsetRows(t, kClasses, ocr.height_rule_by_class, asIs);
-  return t;
+      "direction or smeared by blur. The tables above follow the labels' legible flag.",
+      "Class", kClasses, ocr.height_rule_by_class);
 }
 
 Table table3FrameSets(const OcrEvaluation& ocr) {
@@ -172,7 +178,7 @@ Table table3FrameSets(const OcrEvaluation& ocr) {
 std::vector<Table> table3All(const OcrEvaluation& ocr,
                              const std::optional<AnomalyFilterCounts>& afm) {
   std::vector<Table> out = {table3(ocr, afm), table3Conditions(ocr), table3Heights(ocr),
-                            table3HeightRule(ocr)};
+                            table3Paint(ocr), table3HeightRule(ocr)};
   if (ocr.parking_numbers_per_frame_set.numbers > 0) out.push_back(table3FrameSets(ocr));
   return out;
 }

@@ -36,11 +36,13 @@ Table table3(const OcrEvaluation& ocr, const std::optional<AnomalyFilterCounts>&
 Table table3Conditions(const OcrEvaluation& ocr);
 // Parking numbers per apparent height bin (OcrEvaluation::parking_numbers_by_height).
 Table table3Heights(const OcrEvaluation& ocr);
+// Parking numbers with intact and worn paint (OcrEvaluation::parking_numbers_by_paint).
+Table table3Paint(const OcrEvaluation& ocr);
 // Per class under the height-only legibility rule (OcrEvaluation::height_rule_by_class).
 Table table3HeightRule(const OcrEvaluation& ocr);
 // Parking numbers per frame set (OcrEvaluation::parking_numbers_per_frame_set).
 Table table3FrameSets(const OcrEvaluation& ocr);
-// The four above, in that order.
+// The five above, in that order (the frame-set table only when it has numbers).
 std::vector<Table> table3All(const OcrEvaluation& ocr,
                              const std::optional<AnomalyFilterCounts>& afm);
 

@@ -60,6 +60,7 @@ nlohmann::json outcomeJson(const TextOutcome& outcome, const io::ImageLabels& tr
     j["occluded_fraction"] = l.occluded_fraction;
     j["truncated"] = l.truncated;
     j["rotation_deg"] = l.rotation_deg;
+    j["paint_wear"] = l.paint_wear;
     j["polygon"] = pointsJson(io::pointQuad(l.polygon));
   }
   if (outcome.detection >= 0) {

@@ -93,6 +93,12 @@ LabelInstance readInstance(const json& j, const std::string& path, size_t index)
   if (j.contains("rotation_deg")) inst.rotation_deg = number(j, "rotation_deg", path, where);
   if (j.contains("visible_polygon"))
     inst.visible_polygon = readPolygon(j["visible_polygon"], "visible_polygon", path, where);
+  if (j.contains("paint_wear")) {
+    inst.paint_wear = number(j, "paint_wear", path, where);
+    if (!(inst.paint_wear >= 0.0 && inst.paint_wear <= 1.0))
+      fail(path, fmt::format("{}field 'paint_wear': expected a number in [0, 1], got {}", where,
+                             inst.paint_wear));
+  }
   return inst;
 }
 
@@ -143,7 +149,8 @@ void saveLabels(const ImageLabels& labels, const std::string& path) {
                      {"truncated", inst.truncated},
                      {"legible", inst.legible},
                      {"landmark_id", inst.landmark_id},
-                     {"rotation_deg", inst.rotation_deg}};
+                     {"rotation_deg", inst.rotation_deg},
+                     {"paint_wear", inst.paint_wear}};
     if (inst.visible_polygon) instance["visible_polygon"] = polygonJson(*inst.visible_polygon);
     instances.push_back(std::move(instance));
   }

@@ -37,6 +37,9 @@ struct LabelInstance {
   std::string landmark_id;
   double rotation_deg = 0.0;
   std::optional<geometry::TextPolygon> visible_polygon;  // text cut or partly hidden
+  // How worn the paint is, 0 (intact) to 1 (mostly erased): the simulator's wear of painted
+  // floor text; 0 for other text and in labels written before session 17 (added later).
+  double paint_wear = 0.0;
 };
 
 struct ImageLabels {

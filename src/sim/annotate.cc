@@ -129,6 +129,7 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
     inst.landmark_id = lm.id;
     inst.occluded_fraction = static_cast<double>(hidden_count) / inside;
     inst.legible = legible;
+    inst.paint_wear = item.paint_wear;
     inst.truncated = inside < total;
     for (const auto& c : poly) inst.truncated = inst.truncated || !camera.model.inImage(c);
     // What an annotator would box: the part that shows, when an edge, an obstacle or the car

@@ -37,6 +37,8 @@ struct Decal {
   int texture = -1;
   Eigen::Vector3f color{1.0f, 1.0f, 1.0f};
   float opacity = 1.0f;
+  // How worn the ink is (wearInk's severity: 0 intact, up to 1 mostly erased).
+  float wear = 0.0f;
 };
 
 // Ceiling lamp: an emissive rectangle on the ceiling, also the light source of the level.
@@ -58,6 +60,7 @@ struct Slot {
 struct TextItem {
   map::Landmark landmark;
   bool in_map = true;
+  float paint_wear = 0.0f;  // the decal's Decal::wear (painted floor text; 0 elsewhere)
 };
 
 struct GarageLevel {

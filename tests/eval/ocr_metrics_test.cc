@@ -132,6 +132,40 @@ TEST(OcrMetrics, ParkingNumbersAreCountedByHeight) {
   EXPECT_EQ(bins.at("24 px and more").tp, 0u);
 }
 
+// Numbers go to the bin of their paint; a false detection, which has no paint, to none.
+TEST(OcrMetrics, ParkingNumbersAreCountedByTheirPaint) {
+  io::ImageLabels truth;
+  truth.instances = {
+      label(0, 0, 100, 30, "B2-117", TextClass::kParkingNumber),    // intact, found
+      label(200, 0, 300, 30, "B2-118", TextClass::kParkingNumber),  // worn, missed
+      label(400, 0, 500, 30, "B2-119", TextClass::kParkingNumber),  // worn, found, misread
+  };
+  truth.instances[1].paint_wear = 0.6;
+  truth.instances[2].paint_wear = 0.3;
+  const std::vector<ocr::TextInstance> detections = {
+      detection(0, 0, 100, 30, "B2-117", "B2-117", TextClass::kParkingNumber),
+      detection(400, 0, 500, 30, "B2-110", "B2-110", TextClass::kParkingNumber),
+      detection(800, 0, 900, 30, "B2-120", "B2-120", TextClass::kParkingNumber),  // false
+  };
+  OcrEvaluator evaluator;
+  evaluator.add(truth, detections, {});
+  const auto& bins = evaluator.result().parking_numbers_by_paint;
+  ASSERT_EQ(bins.size(), 2u);
+  const OcrCounts& intact = bins.at("intact paint");
+  const OcrCounts& worn = bins.at("worn paint");
+  EXPECT_EQ(intact.truths, 1u);
+  EXPECT_EQ(intact.tp, 1u);
+  EXPECT_EQ(intact.recognized, 1u);
+  EXPECT_EQ(worn.truths, 2u);
+  EXPECT_EQ(worn.tp, 1u);
+  EXPECT_EQ(worn.fn, 1u);
+  EXPECT_EQ(worn.recognized, 0u);
+  EXPECT_EQ(intact.fp + worn.fp, 0u);
+  EXPECT_EQ(evaluator.result().overall.fp, 1u);
+  EXPECT_EQ(paintBin(0.0), "intact paint");
+  EXPECT_EQ(paintBin(0.01), "worn paint");
+}
+
 TEST(OcrMetrics, TheHeightOnlyRuleCaresForTextLabelledIllegibleButTallEnough) {
   io::ImageLabels truth;
   truth.instances = {

@@ -25,6 +25,7 @@ ImageLabels sampleLabels() {
   number.text = "B2-117";
   number.landmark_id = "B2-117";
   number.rotation_deg = 37.25;
+  number.paint_wear = 0.625;
   LabelInstance pillar = number;
   pillar.text = "C3";
   pillar.cls = map::TextClass::kPillar;
@@ -32,6 +33,7 @@ ImageLabels sampleLabels() {
   pillar.truncated = true;
   pillar.landmark_id = "P-C3";
   pillar.rotation_deg = 180.0;
+  pillar.paint_wear = 0.0;
   pillar.visible_polygon = {Eigen::Vector2d(100.4, 200.6), Eigen::Vector2d(140.25, 200.8),
                             Eigen::Vector2d(139.5, 240.0), Eigen::Vector2d(99.0, 239.0)};
   LabelInstance thin = number;
@@ -78,6 +80,7 @@ TEST_F(LabelsTest, JsonRoundTripIsExact) {
     EXPECT_EQ(a.legible, b.legible);
     EXPECT_EQ(a.landmark_id, b.landmark_id);
     EXPECT_EQ(a.rotation_deg, b.rotation_deg);
+    EXPECT_EQ(a.paint_wear, b.paint_wear);
     ASSERT_EQ(a.visible_polygon.has_value(), b.visible_polygon.has_value());
     if (a.visible_polygon) {
       for (int k = 0; k < 4; ++k) EXPECT_EQ((*a.visible_polygon)[k], (*b.visible_polygon)[k]);
@@ -102,6 +105,21 @@ TEST_F(LabelsTest, LegibleDefaultsToTrueAndMustBeABoolean) {
       "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "text": "A",
       "class": "pillar", "legible": "yes"}]})");
   EXPECT_EQ(loadError(bad), "labels " + bad + ": instance #0: field 'legible': expected a boolean");
+}
+
+// Labels written before session 17 have no paint_wear: intact paint. A wear outside [0, 1]
+// is an error.
+TEST_F(LabelsTest, PaintWearDefaultsToIntactAndMustLieBetweenZeroAndOne) {
+  const std::string old = write("old.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
+      "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "text": "A",
+      "class": "parking_number"}]})");
+  EXPECT_EQ(loadLabels(old).instances.at(0).paint_wear, 0.0);
+  const std::string bad = write("bad.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
+      "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "text": "A",
+      "class": "parking_number", "paint_wear": 1.5}]})");
+  EXPECT_EQ(loadError(bad), "labels " + bad +
+                                ": instance #0: field 'paint_wear': expected a number in [0, 1], "
+                                "got 1.5");
 }
 
 TEST_F(LabelsTest, MissingFieldIsNamed) {

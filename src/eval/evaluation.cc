@@ -13,7 +13,7 @@
 #include "eval/conditions.h"
 #include "eval/dataset.h"
 #include "eval/dead_reckoning.h"
-#include "eval/frame_set_recall.h"
+#include "eval/number_recall.h"
 #include "eval/pose_prediction.h"
 #include "eval/tables.h"
 #include "io/sequence.h"
@@ -201,7 +201,7 @@ TrajectoryView makeView(const io::Sequence& seq, const VariantRun& run, double t
 OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSpotter& spotter,
                           const OcrRunOptions& options) {
   OcrEvaluator evaluator(options.metrics);
-  FrameSetRecallTally frame_sets(options.metrics);
+  NumberRecallTally frame_sets(options.metrics), drives(options.metrics);
   for (size_t s = 0; s < sequences.size(); ++s) {
     const io::Sequence seq(sequences[s]);
     const std::vector<std::string> conditions =
@@ -237,14 +237,17 @@ OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSp
         const std::vector<ocr::TextInstance> found = spotter.spot(image, request);
         evaluator.add(*labels, found, conditions, msSince(start) / 1000.0);
         frame_sets.addImage(*labels, found);
+        drives.addImage(*labels, found);
         if (options.on_image) options.on_image(name, *labels, found);
       }
-      frame_sets.endFrameSet();
+      frame_sets.endGroup();
       if (options.progress) options.progress({stage, i + 1, frames});
     }
+    drives.endGroup();
   }
   OcrEvaluation out = evaluator.result();
   out.parking_numbers_per_frame_set = frame_sets.result();
+  out.parking_numbers_per_drive = drives.result();
   return out;
 }
 

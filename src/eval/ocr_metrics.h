@@ -42,11 +42,12 @@ struct OcrCounts {
   }
 };
 
-// Per frame set, each cared-for parking number counted once (eval/frame_set_recall.h).
-struct FrameSetRecall {
-  size_t numbers = 0;  // (frame set, parking number) pairs cared for in some camera's image
-  size_t found = 0;    // ... found in some camera's image
-  size_t read = 0;     // ... found and read right in some camera's image
+// Per group of images (a frame set, a drive), each cared-for parking number counted once
+// (eval/number_recall.h).
+struct NumberRecall {
+  size_t numbers = 0;  // (group, parking number) pairs cared for in some image of the group
+  size_t found = 0;    // ... found in some image of the group
+  size_t read = 0;     // ... found and read right in some image of the group
   double foundShare() const { return numbers ? static_cast<double>(found) / numbers : 0.0; }
   double readShare() const { return numbers ? static_cast<double>(read) / numbers : 0.0; }
 };
@@ -66,8 +67,10 @@ struct OcrEvaluation {
   // so that figures compare across the change to the blur- and pitch-aware rule.
   std::map<std::string, OcrCounts> height_rule_by_class;
   // Parking numbers per frame set, found or read in some camera's image
-  // (eval/frame_set_recall.h; filled by evaluateOcr, empty from OcrEvaluator alone).
-  FrameSetRecall parking_numbers_per_frame_set;
+  // (eval/number_recall.h; filled by evaluateOcr, empty from OcrEvaluator alone).
+  NumberRecall parking_numbers_per_frame_set;
+  // ... and per drive: the numbers a drive finds and reads in some image at all (added later).
+  NumberRecall parking_numbers_per_drive;
   size_t images = 0;
   double spotting_seconds = 0.0;  // time spent in the engine, for images per second
   double imagesPerSecond() const {

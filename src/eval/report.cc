@@ -133,9 +133,11 @@ nlohmann::json ocrEvaluationJson(const OcrEvaluation& ocr) {
   o["parking_numbers_by_paint"] = nlohmann::json::object();
   for (const auto& [bin, c] : ocr.parking_numbers_by_paint)
     o["parking_numbers_by_paint"][bin] = countsJson(c);
-  const FrameSetRecall& frame_sets = ocr.parking_numbers_per_frame_set;
-  o["parking_numbers_per_frame_set"] = {
-      {"numbers", frame_sets.numbers}, {"found", frame_sets.found}, {"read", frame_sets.read}};
+  const auto recallJson = [](const NumberRecall& r) {
+    return nlohmann::json{{"numbers", r.numbers}, {"found", r.found}, {"read", r.read}};
+  };
+  o["parking_numbers_per_frame_set"] = recallJson(ocr.parking_numbers_per_frame_set);
+  o["parking_numbers_per_drive"] = recallJson(ocr.parking_numbers_per_drive);
   o["height_rule_by_class"] = nlohmann::json::object();
   for (const auto& [cls, c] : ocr.height_rule_by_class)
     o["height_rule_by_class"][cls] = countsJson(c);

@@ -160,19 +160,39 @@ Table table3HeightRule(const OcrEvaluation& ocr) {
       "Class", kClasses, ocr.height_rule_by_class);
 }
 
-Table table3FrameSets(const OcrEvaluation& ocr) {
-  const FrameSetRecall& r = ocr.parking_numbers_per_frame_set;
+namespace {
+
+// One row: the pairs of a group of images and a parking number, found and read by some image.
+Table recallTable(const std::string& key, const std::string& heading, const std::string& caption,
+                  const std::string& by, const NumberRecall& r) {
   Table t;
-  t.key = "table3_frame_sets";
-  t.title = "Table 3 per frame set: parking numbers found by some camera";
-  t.caption =
-      "Each (frame set, parking number) pair cared for in some camera's image counts once: "
-      "found when some camera's image found it, read when some camera found it and read it "
-      "right. The localization works on the frame set.";
-  t.header = {"Pairs", "Found by some camera", "Found and read right by some camera"};
+  t.key = key;
+  t.title = heading;
+  t.caption = caption;
+  t.header = {"Pairs", "Found by some " + by, "Found and read right by some " + by};
   t.rows.push_back({TableCell::number(static_cast<double>(r.numbers), 0),
                     TableCell::percent(r.foundShare()), TableCell::percent(r.readShare())});
   return t;
+}
+
+}  // namespace
+
+Table table3FrameSets(const OcrEvaluation& ocr) {
+  return recallTable(
+      "table3_frame_sets", "Table 3 per frame set: parking numbers found by some camera",
+      "Each (frame set, parking number) pair cared for in some camera's image counts once: "
+      "found when some camera's image found it, read when some camera found it and read it "
+      "right. The localization works on the frame set.",
+      "camera", ocr.parking_numbers_per_frame_set);
+}
+
+Table table3Drives(const OcrEvaluation& ocr) {
+  return recallTable(
+      "table3_drives", "Table 3 per drive: parking numbers found in some image of the drive",
+      "Each (drive, parking number) pair cared for in some image of the drive counts once: "
+      "found when some image found it, read when some image found it and read it right. The "
+      "per-image rates weigh a number by the images that show it; this table, once.",
+      "image", ocr.parking_numbers_per_drive);
 }
 
 std::vector<Table> table3All(const OcrEvaluation& ocr,
@@ -180,6 +200,7 @@ std::vector<Table> table3All(const OcrEvaluation& ocr,
   std::vector<Table> out = {table3(ocr, afm), table3Conditions(ocr), table3Heights(ocr),
                             table3Paint(ocr), table3HeightRule(ocr)};
   if (ocr.parking_numbers_per_frame_set.numbers > 0) out.push_back(table3FrameSets(ocr));
+  if (ocr.parking_numbers_per_drive.numbers > 0) out.push_back(table3Drives(ocr));
   return out;
 }
 

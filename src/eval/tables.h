@@ -42,7 +42,9 @@ Table table3Paint(const OcrEvaluation& ocr);
 Table table3HeightRule(const OcrEvaluation& ocr);
 // Parking numbers per frame set (OcrEvaluation::parking_numbers_per_frame_set).
 Table table3FrameSets(const OcrEvaluation& ocr);
-// The five above, in that order (the frame-set table only when it has numbers).
+// Parking numbers per drive (OcrEvaluation::parking_numbers_per_drive).
+Table table3Drives(const OcrEvaluation& ocr);
+// The six above, in that order (the frame-set and drive tables only when they have numbers).
 std::vector<Table> table3All(const OcrEvaluation& ocr,
                              const std::optional<AnomalyFilterCounts>& afm);
 

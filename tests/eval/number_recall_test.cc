@@ -1,4 +1,4 @@
-#include "eval/frame_set_recall.h"
+#include "eval/number_recall.h"
 
 #include <gtest/gtest.h>
 
@@ -25,8 +25,15 @@ ocr::TextInstance detection(float x0, const std::string& text) {
   return d;
 }
 
-TEST(FrameSetRecall, ANumberCountsOnceFoundWhenSomeCameraFindsIt) {
-  FrameSetRecallTally tally;
+// The tally's pairs so far, found and read.
+void expectPairs(const NumberRecallTally& tally, size_t numbers, size_t found, size_t read) {
+  EXPECT_EQ(tally.result().numbers, numbers);
+  EXPECT_EQ(tally.result().found, found);
+  EXPECT_EQ(tally.result().read, read);
+}
+
+TEST(NumberRecall, PerFrameSetANumberCountsOnceFoundWhenSomeCameraFindsIt) {
+  NumberRecallTally tally;
   io::ImageLabels front, rear;
   // A002 is seen by both cameras and found by the rear one only; A003 by the front only,
   // misread; A004 nowhere found; A005 is hidden (don't care).
@@ -34,19 +41,31 @@ TEST(FrameSetRecall, ANumberCountsOnceFoundWhenSomeCameraFindsIt) {
   rear.instances = {number(0, "A002"), number(200, "A004")};
   tally.addImage(front, {detection(200, "A008"), detection(400, "A005")});
   tally.addImage(rear, {detection(0, "A002")});
-  tally.endFrameSet();
-  EXPECT_EQ(tally.result().numbers, 3u);
-  EXPECT_EQ(tally.result().found, 2u);
-  EXPECT_EQ(tally.result().read, 1u);
+  tally.endGroup();
+  expectPairs(tally, 3, 2, 1);
 
   // The next frame set counts its own pairs, the front camera's A002 (found and read) and
   // A003 (missed).
   tally.addImage(front, {detection(0, "A002")});
-  tally.endFrameSet();
-  EXPECT_EQ(tally.result().numbers, 5u);
-  EXPECT_EQ(tally.result().found, 3u);
-  EXPECT_EQ(tally.result().read, 2u);
+  tally.endGroup();
+  expectPairs(tally, 5, 3, 2);
   EXPECT_DOUBLE_EQ(tally.result().foundShare(), 0.6);
+}
+
+// A drive is one group of many frame sets: a number counts once, found when some frame found
+// it; the next drive's numbers are pairs of their own.
+TEST(NumberRecall, PerDriveANumberCountsOnceFoundWhenSomeFrameFindsIt) {
+  NumberRecallTally tally;
+  io::ImageLabels frame;
+  frame.instances = {number(0, "A002"), number(200, "A003")};
+  tally.addImage(frame, {});                      // both missed
+  tally.addImage(frame, {detection(0, "A008")});  // A002 found, misread
+  tally.addImage(frame, {detection(0, "A002")});  // A002 found and read
+  tally.endGroup();
+  expectPairs(tally, 2, 1, 1);
+  tally.addImage(frame, {detection(200, "A003")});
+  tally.endGroup();
+  expectPairs(tally, 4, 2, 2);
 }
 
 }  // namespace

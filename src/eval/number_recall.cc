@@ -1,11 +1,11 @@
-#include "eval/frame_set_recall.h"
+#include "eval/number_recall.h"
 
 #include "eval/text_outcomes.h"
 
 namespace parkloc::eval {
 
-void FrameSetRecallTally::addImage(const io::ImageLabels& labels,
-                                   const std::vector<ocr::TextInstance>& found) {
+void NumberRecallTally::addImage(const io::ImageLabels& labels,
+                                 const std::vector<ocr::TextInstance>& found) {
   for (const TextOutcome& o : textOutcomes(labels, found, options_)) {
     if (o.truth < 0) continue;  // a false detection
     const io::LabelInstance& truth = labels.instances[static_cast<size_t>(o.truth)];
@@ -19,7 +19,7 @@ void FrameSetRecallTally::addImage(const io::ImageLabels& labels,
   }
 }
 
-void FrameSetRecallTally::endFrameSet() {
+void NumberRecallTally::endGroup() {
   for (const auto& [id, outcome] : current_) {
     ++result_.numbers;
     result_.found += outcome.first;

@@ -124,11 +124,10 @@ struct SpotterArgs {
         ->capture_default_str();
     cmd->add_flag("--reread-unmatched,!--no-reread-unmatched", reread_unmatched,
                   "Under a predicted pose, read a floor box that matched no placed text again "
-                  "with other margins, by the fallback recognizer")
-        ->capture_default_str();
+                  "with a larger margin, by the fallback recognizer (default: on)");
     cmd->add_flag("--reread-by-both-recognizers", reread_by_both_recognizers,
-                  "... by the first recognizer too (a third more time an image, hardly more "
-                  "read)");
+                  "... by the first recognizer too (more time an image; with session 14's two "
+                  "margins it read 0.1 points more)");
     cmd->add_option("--floor-read-expand", floor_read_expand,
                     "Floor detector: its boxes are read from a crop grown by these factors "
                     "(along, across the text)")

@@ -56,6 +56,40 @@ void BM_DetectionGroundView(benchmark::State& state) {
 }
 BENCHMARK(BM_DetectionGroundView)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// Under a predicted pose, the windows around texts placed beyond the floor view
+// (ocr/placed_windows.h): the mosaic of Arg windows of 2.4 m, detected in one run, against
+// BM_DetectionGroundView's whole view.
+void BM_DetectionPlacedWindows(benchmark::State& state) {
+  const ocr::DbDetector detector(kModels + "/ch_PP-OCRv4_det_infer.onnx", {});
+  const auto rig = geometry::defaultRig();
+  const auto* left = rig.find("left");
+  const ocr::GroundView view(*left), reach(*left, ocr::PpOcrOptions{}.placed_reach);
+  std::vector<map::PlacedText> placed;
+  for (int k = 0; k < state.range(0); ++k) {  // 2.7 m apart along the left camera's row
+    map::PlacedText text;
+    text.text = "B2-" + std::to_string(120 + k);
+    text.vehicle_xy = {2.0 + (k % 2 == 0 ? 1 : -1) * (6.9 + 2.7 * (k / 2)), 3.0};
+    placed.push_back(text);
+  }
+  ocr::PlacedWindowOptions options;
+  options.max_texts = 0;
+  const auto windows = ocr::windowsBeyondView(view, reach, placed, options);
+  cv::Size size;
+  for (auto _ : state) {
+    const auto mosaic = ocr::mosaicOf(reach, frame().image, windows);
+    size = mosaic.image.size();
+    benchmark::DoNotOptimize(detector.probability({mosaic.image}));
+  }
+  state.SetLabel(std::to_string(windows.size()) + " windows, " + std::to_string(size.width) + "x" +
+                 std::to_string(size.height) + " incl. remap");
+}
+BENCHMARK(BM_DetectionPlacedWindows)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 void BM_RecognitionPerCrop(benchmark::State& state) {
   const ocr::CtcRecognizer recognizer(kModels + "/ch_PP-OCRv4_rec_infer.onnx", {});
   const int batch = static_cast<int>(state.range(0));

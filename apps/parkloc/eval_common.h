@@ -42,6 +42,10 @@ struct SpotterArgs {
   std::string band_detector;                  // '', 'tuned' or a path (bandDetectorPath)
   std::string fallback_recognizer = "tuned";  // '', 'tuned' or a path (recognizerPath)
   ocr::GroundViewOptions floor_view;
+  ocr::GroundViewOptions placed_reach = ocr::PpOcrOptions{}.placed_reach;
+  double placed_window = ocr::PpOcrOptions{}.placed_windows.side_m;
+  double placed_window_min_height = ocr::PpOcrOptions{}.placed_windows.min_height_px;
+  int placed_windows_max = ocr::PpOcrOptions{}.placed_windows.max_texts;
   double floor_unclip_ratio = ocr::PpOcrOptions{}.floor_db.unclip_ratio;
   float floor_box_threshold = ocr::PpOcrOptions{}.floor_db.box_threshold;
   float floor_binary_threshold = ocr::PpOcrOptions{}.floor_db.binary_threshold;
@@ -138,6 +142,28 @@ struct SpotterArgs {
                     "Floor view: metres per pixel")
         ->check(CLI::Range(0.005, 0.1))
         ->capture_default_str();
+    cmd->add_option("--placed-reach-half-width", placed_reach.half_width,
+                    "Under a predicted pose, look for the floor texts the map places beyond "
+                    "the floor view, out to this many metres to each side of a camera, in "
+                    "windows around them (0: never)")
+        ->check(CLI::Range(0.0, 30.0))
+        ->capture_default_str();
+    cmd->add_option("--placed-reach-far", placed_reach.far,
+                    "... and out to this many metres ahead of a camera")
+        ->check(CLI::Range(1.0, 30.0))
+        ->capture_default_str();
+    cmd->add_option("--placed-window", placed_window,
+                    "... each window a square of this side, in metres, around a placed text")
+        ->check(CLI::Range(0.5, 10.0))
+        ->capture_default_str();
+    cmd->add_option("--placed-window-min-height", placed_window_min_height,
+                    "... for the texts that would show at least this many pixels tall")
+        ->check(CLI::Range(0.0, 100.0))
+        ->capture_default_str();
+    cmd->add_option("--placed-windows-max", placed_windows_max,
+                    "... for at most this many texts an image, the tallest first (0: all)")
+        ->check(CLI::Range(0, 100))
+        ->capture_default_str();
   }
 };
 
@@ -151,6 +177,10 @@ inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   if (!args.fallback_recognizer.empty())
     options.models.fallback_recognition = recognizerPath(args.fallback_recognizer, args.models);
   options.ground_view = args.floor_view;
+  options.placed_reach = args.placed_reach;
+  options.placed_windows.side_m = args.placed_window;
+  options.placed_windows.min_height_px = args.placed_window_min_height;
+  options.placed_windows.max_texts = args.placed_windows_max;
   options.floor_db.unclip_ratio = args.floor_unclip_ratio;
   options.floor_db.box_threshold = args.floor_box_threshold;
   options.floor_db.binary_threshold = args.floor_binary_threshold;

@@ -808,6 +808,9 @@ FrameResult Pipeline::Impl::process(const FrameInput& frame) {
                                      options.level.empty() ? active_level : options.level);
             request.placement_radius_m = options.sweep_placement_radius_m;
             request.narrow_to_placed_texts = false;
+            // Numbers beyond the floor view are seen at a grazing angle, and their corners
+            // fix the pose less well (docs/OCR.md, session 16).
+            request.look_beyond_the_view = false;
           }
         } else if (searching) {
           request.max_reads = std::max(0, options.search_max_reads);

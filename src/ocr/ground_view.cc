@@ -77,6 +77,15 @@ cv::Mat GroundView::render(const cv::Mat& raw) const {
   return view;
 }
 
+cv::Mat GroundView::render(const cv::Mat& raw, const cv::Rect& window) const {
+  const cv::Rect inside = window & rect();
+  cv::Mat view;
+  if (inside.empty()) return view;
+  cv::remap(raw, view, map_x_(inside), map_y_(inside), cv::INTER_LINEAR, cv::BORDER_CONSTANT,
+            cv::Scalar::all(0));
+  return view;
+}
+
 Eigen::Vector2d GroundView::groundFromView(const cv::Point2f& v) const {
   return origin_ + right_ * (v.x * options_.resolution) + toward_ * (v.y * options_.resolution);
 }

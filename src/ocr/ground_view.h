@@ -31,9 +31,13 @@ class GroundView {
 
   cv::Size size() const { return map_x_.size(); }
   const geometry::RigCamera& camera() const { return camera_; }
+  const GroundViewOptions& options() const { return options_; }
   // The view of a raw image: black outside the lens' field; where the vehicle's body hides
   // the floor, whatever the image shows there (the body), as a detector would see it.
   cv::Mat render(const cv::Mat& raw) const;
+  // The part of the view inside `window` (view pixels, clipped to the view), rendered alone.
+  cv::Mat render(const cv::Mat& raw, const cv::Rect& window) const;
+  cv::Rect rect() const { return {cv::Point(0, 0), size()}; }
   // View pixel -> raw image pixel through the ground plane; empty outside the lens' field.
   // Where the vehicle's body hides the floor, the pixel that shows the body.
   std::optional<cv::Point2f> rawFromView(const cv::Point2f& view_pixel) const;

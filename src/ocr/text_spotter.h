@@ -80,6 +80,10 @@ struct SpotRequest {
   // A box that may run out of the image then also decodes against the parts of those texts
   // that a cut would leave (ocr/cut_parts.h; TextInstance::partial).
   bool narrow_to_placed_texts = true;
+  // Full frame, with `placed_floor_texts` and `camera`: also look for the floor texts placed
+  // beyond the camera's floor view, in windows of a wider view around them (engines that
+  // detect in a floor view; ocr/placed_windows.h) (added later).
+  bool look_beyond_the_view = true;
   // When non-empty, spot only inside these regions instead of the full frame.
   std::vector<RegionOfInterest> regions;
   // The camera that took the image, when known (not owned): engines may use its

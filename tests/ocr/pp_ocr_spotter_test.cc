@@ -415,6 +415,44 @@ TEST(PpOcrSpotterModels, TheFallbackRecognizerAloneReadsTheMarginsWhenThereIsOne
   EXPECT_TRUE(spot.with[0].second_opinion);
 }
 
+// A number 4.5 m along the right camera's side, beyond a +-3 m floor view: found and read in
+// a window around where the map places it, by the fallback recognizer alone, and only there.
+// (Farther out, as in the garage's drives, this test's point-sampled rendering of the paint
+// aliases into noise.)
+TEST(PpOcrSpotterModels, ANumberPlacedBeyondTheFloorViewIsFoundInAWindowAroundIt) {
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.models.floor_detection = floorDetectorIn(PARKLOC_MODEL_DIR);
+  options.models.fallback_recognition = tunedRecognizerIn(PARKLOC_MODEL_DIR);
+  options.ground_view.half_width = 3.0;
+  const auto rig = geometry::defaultRig();
+  const geometry::RigCamera* right = rig.find("right");
+  ASSERT_NE(right, nullptr);
+  const Eigen::Vector2d centre(right->vehicle_from_camera.translation().x() + 4.5, -2.95);
+  const auto scene = testing::renderFloorText(*right, "D009", centre, M_PI, 1.2, 0.45);
+  SpotRequest request;
+  request.lexicon = request.floor_lexicon = {"D008", "D009", "D010"};
+  request.camera = right;
+  request.placed_floor_texts = {{"D009", centre, {-1.0, 0.0}}};
+  auto spotWith = [&](const PpOcrOptions& o, bool look_beyond) {
+    PpOcrSpotter spotter(o);
+    request.look_beyond_the_view = look_beyond;
+    std::vector<TextInstance> found;
+    for (const TextInstance& inst : spotter.spot(scene.image, request))
+      if (inst.text == "D009") found.push_back(inst);
+    return found;
+  };
+  const auto found = spotWith(options, true);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_TRUE(found[0].second_opinion);
+  EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), 3.0);
+  EXPECT_TRUE(spotWith(options, false).empty());
+  PpOcrOptions without = options;
+  without.placed_reach.half_width = 0.0;
+  EXPECT_TRUE(spotWith(without, true).empty());
+}
+
 // A box read against the texts placed near it decodes under PpOcrOptions::placed_lexicon, one
 // read against the whole floor lexicon under PpOcrOptions::lexicon.
 TEST(PpOcrSpotterModels, APlacedBoxDecodesUnderThePlacedLexiconsOptions) {

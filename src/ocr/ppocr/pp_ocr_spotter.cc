@@ -82,6 +82,9 @@ struct ReadJob {
   bool keep_unread = false;
   // The crop is read from the quad grown by these factors (along, across the text).
   float read_expand_x = 1.f, read_expand_y = 1.f;
+  // Read by the fallback recognizer alone, once, when there is one: a box that only a
+  // lexicon match may keep (a window beyond the floor view) needs no free reading.
+  bool fallback_only = false;
 };
 
 // Crops for one recognizer call, each with its job and whether it was turned by 180 degrees.
@@ -148,6 +151,9 @@ std::vector<std::optional<TextInstance>> readJobs(
     const PpOcrOptions& options, const CtcRecognizer& recognizer,
     const DirectionClassifier* direction, const Charset& charset,
     const CtcRecognizer* fallback_recognizer = nullptr) {
+  auto firstReads = [&](size_t i) {
+    return !jobs[i].fallback_only || fallback_recognizer == nullptr;
+  };
   std::vector<cv::Mat> upright(jobs.size());
   for (size_t i = 0; i < jobs.size(); ++i)
     upright[i] = rectifiedCrop(
@@ -161,7 +167,7 @@ std::vector<std::optional<TextInstance>> readJobs(
     std::vector<cv::Mat> ask;
     std::vector<size_t> asked;
     for (size_t i = 0; i < jobs.size(); ++i)
-      if (jobs[i].try_both_directions) {
+      if (jobs[i].try_both_directions && firstReads(i)) {
         ask.push_back(upright[i]);
         asked.push_back(i);
       }
@@ -177,6 +183,7 @@ std::vector<std::optional<TextInstance>> readJobs(
 
   CropBatch first;
   for (size_t i = 0; i < jobs.size(); ++i) {
+    if (!firstReads(i)) continue;
     if (directions[i] & 1) first.add(upright[i], i, false);
     if (directions[i] & 2) first.add(upright[i], i, true);
   }
@@ -228,7 +235,7 @@ std::vector<std::optional<TextInstance>> readJobs(
   // The direction classifier was sure, yet no lexicon entry fits: try the other direction.
   CropBatch retry;
   for (size_t i = 0; i < jobs.size(); ++i)
-    if (directions[i] != 3 && jobs[i].try_both_directions && unmatched(i))
+    if (directions[i] != 3 && jobs[i].try_both_directions && unmatched(i) && firstReads(i))
       retry.add(upright[i], i, directions[i] == 1);
   decodeAll(retry, recognizer, false);
 
@@ -249,7 +256,7 @@ std::vector<std::optional<TextInstance>> readJobs(
   // PpOcrOptions::reread_by_fallback_only).
   CropBatch margins;
   for (size_t i = 0; i < jobs.size(); ++i) {
-    if (!unmatched(i) || !jobs[i].placed || jobs[i].try_both_directions) continue;
+    if (!unmatched(i) || !jobs[i].placed || jobs[i].try_both_directions || !firstReads(i)) continue;
     for (const auto& [along, across] : options.reread_margins)
       margins.add(
           rectifiedCrop(image, expandQuad(jobs[i].quad, along, across), CtcRecognizer::kHeight,
@@ -285,16 +292,29 @@ std::vector<std::optional<TextInstance>> readJobs(
   return out;
 }
 
-// Whether a floor-view quad (reading order) may run out of what the camera sees at its start
-// and at its end: a point a quarter of its length beyond that end is not in the image (pixel
-// centres 0 .. size - 1) or lies behind the vehicle's body.
-std::pair<bool, bool> mayRunOutOfSight(const Quad& quad, const GroundView& view) {
-  const cv::Point2f start = 0.5f * (quad[0] + quad[3]), end = 0.5f * (quad[1] + quad[2]);
-  const cv::Point2f beyond = 0.25f * (end - start);
-  return {!view.seesTheFloorAt(start - beyond), !view.seesTheFloorAt(end + beyond)};
-}
-
 }  // namespace
+
+struct PpOcrSpotter::FloorWindow {
+  const GroundView* view = nullptr;
+  const WindowMosaic* mosaic = nullptr;  // the image is this mosaic of `view`; null: `view`
+  // Read only the boxes near a placed text, and keep only those that match one.
+  bool only_placed_texts = false;
+
+  // What to add to the image pixels of what lies at `p` to get `view` pixels; empty in a gap
+  // between windows.
+  std::optional<cv::Point2f> shiftAt(const cv::Point2f& p) const {
+    return mosaic != nullptr ? mosaic->shiftAt(p) : cv::Point2f(0.f, 0.f);
+  }
+  // Whether a quad (reading order, shifted by `shift` into the view) may run out of what the
+  // camera sees at its start and at its end: a point a quarter of its length beyond that end is
+  // not in the image (pixel centres 0 .. size - 1) or lies behind the vehicle's body.
+  std::pair<bool, bool> mayRunOutOfSight(const Quad& quad, const cv::Point2f& shift) const {
+    const cv::Point2f start = 0.5f * (quad[0] + quad[3]), end = 0.5f * (quad[1] + quad[2]);
+    const cv::Point2f beyond = 0.25f * (end - start);
+    return {!view->seesTheFloorAt(start - beyond + shift),
+            !view->seesTheFloorAt(end + beyond + shift)};
+  }
+};
 
 const GroundView& PpOcrSpotter::groundView(const geometry::RigCamera& camera) {
   // Keyed by the whole calibration, not the name: two rigs may both have a "left" camera.
@@ -304,10 +324,19 @@ const GroundView& PpOcrSpotter::groundView(const geometry::RigCamera& camera) {
   return *ground_views_.back();
 }
 
+const GroundView& PpOcrSpotter::placedReach(const geometry::RigCamera& camera) {
+  for (const auto& view : placed_reaches_)
+    if (geometry::sameCalibration(view->camera(), camera)) return *view;
+  GroundViewOptions reach = options_.placed_reach;
+  reach.resolution = options_.ground_view.resolution;  // what the floor detector was tuned at
+  placed_reaches_.push_back(std::make_unique<GroundView>(camera, reach));
+  return *placed_reaches_.back();
+}
+
 std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                                                       const SpotRequest& request,
                                                       const geometry::RigCamera* camera,
-                                                      DetectorRole role) {
+                                                      DetectorRole role, const FloorWindow* floor) {
   // A floor view's scale is its resolution, chosen for the floor detector: a view wider than
   // detection_max_side (+-8 m at 1.5 cm) is not shrunk.
   const double fit =
@@ -351,10 +380,10 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
   }
   // Under a predicted pose each floor box decodes against the texts placed near it; the
   // jobs point into `placed_lexicons`.
-  const GroundView* placing = role == DetectorRole::kFloorView && request.camera != nullptr &&
-                                      !request.placed_floor_texts.empty()
-                                  ? &groundView(*request.camera)
-                                  : nullptr;
+  const FloorWindow* placing =
+      role == DetectorRole::kFloorView && floor != nullptr && !request.placed_floor_texts.empty()
+          ? floor
+          : nullptr;
   std::deque<std::vector<std::string>> placed_lexicons;
   std::deque<CutCandidates> cut_lexicons;
   std::vector<ReadJob> jobs;
@@ -366,8 +395,15 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                       ? &request.floor_lexicon
                       : &request.lexicon;
     if (placing != nullptr) {
-      const Eigen::Vector2d ground = placing->groundFromView(quadCentre(box.quad));
+      const std::optional<cv::Point2f> shift = placing->shiftAt(quadCentre(box.quad));
+      if (!shift) continue;
+      const Eigen::Vector2d ground = placing->view->groundFromView(quadCentre(box.quad) + *shift);
       const double radius = request.placement_radius_m;
+      // A window beyond the view looks for the texts placed in it, not at what lies around
+      // them (a parked car's edges): nothing else there is read.
+      if (placing->only_placed_texts &&
+          map::textsNear(request.placed_floor_texts, ground, radius).empty())
+        continue;
       if (request.narrow_to_placed_texts) {
         placed_lexicons.push_back(map::textsNear(request.placed_floor_texts, ground, radius));
         job.reading_lexicon = job.lexicon;
@@ -378,8 +414,8 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
       const auto reading = map::readingDirectionNear(request.placed_floor_texts, ground, radius,
                                                      options_.placed_reading_max_angle);
       if (reading) {
-        const cv::Point2f along =
-            placing->viewFromGround(ground + *reading) - placing->viewFromGround(ground);
+        const cv::Point2f along = placing->view->viewFromGround(ground + *reading) -
+                                  placing->view->viewFromGround(ground);
         if (const auto oriented =
                 orientedAlong(job.quad, along, options_.placed_reading_max_angle)) {
           job.quad = *oriented;
@@ -391,7 +427,7 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
       // one way round: the cut end must be known).
       if (request.narrow_to_placed_texts && !job.try_both_directions &&
           options_.min_cut_part_chars > 0 && !job.lexicon->empty()) {
-        const auto [at_start, at_end] = mayRunOutOfSight(job.quad, *placing);
+        const auto [at_start, at_end] = placing->mayRunOutOfSight(job.quad, *shift);
         if (at_start || at_end) {
           cut_lexicons.push_back(withCutParts(*job.lexicon, at_start, at_end,
                                               static_cast<size_t>(options_.min_cut_part_chars)));
@@ -403,6 +439,7 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
     job.keep_unread = role == DetectorRole::kFloorView && box.score >= options_.confident_box_score;
     job.read_expand_x = read_expand_x;
     job.read_expand_y = read_expand_y;
+    job.fallback_only = placing != nullptr && placing->only_placed_texts;
     jobs.push_back(job);
   }
   const CtcRecognizer* fallback = nets_->fallback_recognizer && request.second_opinions
@@ -433,30 +470,54 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
   size_t on_floor = 0;                      // out[0, on_floor) came from the floor view
   std::vector<ClassWeights> floor_classes;  // their class weights
   const bool placed_classes = request.narrow_to_placed_texts && !request.placed_floor_texts.empty();
-  if (ground) {
-    // Floor text, found and read in the bird's-eye view, its corners mapped back to raw.
-    const GroundView& view = groundView(*request.camera);
+  // Floor text found and read in a bird's-eye view (or a mosaic of its windows), its corners
+  // mapped back to raw; with `skip_seen`, text whose centre lies in a polygon found before is
+  // dropped.
+  auto addFloorText = [&](const cv::Mat& rendered, const FloorWindow& window, bool skip_seen) {
+    const size_t found_before = out.size();
     for (TextInstance& inst :
-         detectAndRead(view.render(image), request, nullptr, DetectorRole::kFloorView)) {
+         detectAndRead(rendered, request, nullptr, DetectorRole::kFloorView, &window)) {
+      // A window reports the placed texts it was opened for, not what else it read.
+      if (window.only_placed_texts && !inst.lexicon_match) continue;
+      const std::optional<cv::Point2f> shift = window.shiftAt(quadCentre(inst.polygon));
+      if (!shift) continue;
       const ClassWeights weights =
-          placed_classes
-              ? floorClassWeightsNear(request.placed_floor_texts,
-                                      view.groundFromView(quadCentre(inst.polygon)),
-                                      request.placement_radius_m, options_.unplaced_class_weight)
-              : kFloorClasses;
+          placed_classes ? floorClassWeightsNear(
+                               request.placed_floor_texts,
+                               window.view->groundFromView(quadCentre(inst.polygon) + *shift),
+                               request.placement_radius_m, options_.unplaced_class_weight)
+                         : kFloorClasses;
       bool inside = true;
       for (auto& p : inst.polygon) {
-        const auto raw = view.rawFromView(p);
+        const auto raw = window.view->rawFromView(p + *shift);
         if (!raw)
           inside = false;
         else
           p = *raw;
       }
       if (!inside) continue;
+      if (skip_seen) {
+        const cv::Point2f c = quadCentre(inst.polygon);
+        bool seen = false;
+        for (size_t i = 0; i < found_before && !seen; ++i) seen = contains(out[i].polygon, c);
+        if (seen) continue;
+      }
       // Final corner fit at the raw image's resolution, on the ground plane.
       inst.polygon = refinedCorners(image, inst.polygon, options_, request.camera);
       out.push_back(std::move(inst));
       floor_classes.push_back(weights);
+    }
+  };
+  if (ground) {
+    const GroundView& view = groundView(*request.camera);
+    addFloorText(view.render(image), {&view, nullptr, false}, false);
+    if (request.look_beyond_the_view && !request.placed_floor_texts.empty() &&
+        options_.placed_reach.half_width > 0) {
+      const GroundView& reach = placedReach(*request.camera);
+      const WindowMosaic mosaic = mosaicOf(
+          reach, image,
+          windowsBeyondView(view, reach, request.placed_floor_texts, options_.placed_windows));
+      if (!mosaic.image.empty()) addFloorText(mosaic.image, {&reach, &mosaic, true}, true);
     }
     on_floor = out.size();
   }

@@ -14,6 +14,7 @@
 #include "ocr/ground_view.h"
 #include "ocr/lexicon.h"
 #include "ocr/onnx_model.h"
+#include "ocr/placed_windows.h"
 #include "ocr/ppocr/pp_ocr_networks.h"
 #include "ocr/raw_band.h"
 #include "ocr/text_classifier.h"
@@ -116,6 +117,17 @@ struct PpOcrOptions {
   float floor_read_expand_y = 1.3f;
   FisheyeView view = FisheyeView::kGround;
   GroundViewOptions ground_view;
+  // Under a predicted pose (SpotRequest::look_beyond_the_view), the floor texts placed beyond
+  // `ground_view` but within this wider view are looked for in windows around them
+  // (ocr/placed_windows.h), detected at `ground_view`'s resolution (this one's is not used).
+  // A half width of 0: never. The side cameras see their row of numbers 6-10 m along the
+  // aisle, which the +-6 m view misses and a +-8 m view costs too much to detect whole.
+  GroundViewOptions placed_reach = [] {
+    GroundViewOptions o;
+    o.half_width = 10.0;
+    return o;
+  }();
+  PlacedWindowOptions placed_windows;
   // Floor-view boxes scoring at least this (PaddleOCR's own box threshold) are text by the
   // detector's standard. With SpotRequest::max_reads they are read before the others (a
   // search turn's two reads go to the boxes it would have read with that threshold), and
@@ -226,13 +238,19 @@ class PpOcrSpotter : public TextSpotter {
   // detection_max_side), the floor detector on a floor view (at the view's resolution), the
   // band detector on a raw image's horizon band (at full resolution).
   enum class DetectorRole { kScene, kFloorView, kRawBand };
+  // A floor view, or a window of one: `image` of detectAndRead is the part of the view from
+  // `origin` (view pixels) on.
+  struct FloorWindow;
   std::vector<TextInstance> detectAndRead(const cv::Mat& image, const SpotRequest& request,
-                                          const geometry::RigCamera* camera, DetectorRole role);
+                                          const geometry::RigCamera* camera, DetectorRole role,
+                                          const FloorWindow* floor = nullptr);
   const GroundView& groundView(const geometry::RigCamera& camera);
+  const GroundView& placedReach(const geometry::RigCamera& camera);
 
   PpOcrOptions options_;
   std::unique_ptr<Networks> nets_;
-  std::vector<std::unique_ptr<GroundView>> ground_views_;  // one per camera calibration
+  std::vector<std::unique_ptr<GroundView>> ground_views_;    // one per camera calibration
+  std::vector<std::unique_ptr<GroundView>> placed_reaches_;  // likewise, for `placed_reach`
 };
 
 // Throws InputError unless `image` is a non-empty 8-bit 3-channel image.

@@ -50,7 +50,7 @@ GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOption
   constexpr int kMarginPx = 32;
   const cv::Rect box = (cv::boundingRect(seen) + cv::Size(2 * kMarginPx, 2 * kMarginPx) -
                         cv::Point(kMarginPx, kMarginPx)) &
-                       cv::Rect(cv::Point(0, 0), size());
+                       rect();
   if (box.area() > 0 && box.size() != size()) {
     origin_ = groundFromView(cv::Point2f(box.x, box.y));
     buildMaps(roundUp32(box.width), roundUp32(box.height));

@@ -399,13 +399,12 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
       if (!shift) continue;
       const Eigen::Vector2d ground = placing->view->groundFromView(quadCentre(box.quad) + *shift);
       const double radius = request.placement_radius_m;
+      std::vector<std::string> near = map::textsNear(request.placed_floor_texts, ground, radius);
       // A window beyond the view looks for the texts placed in it, not at what lies around
       // them (a parked car's edges): nothing else there is read.
-      if (placing->only_placed_texts &&
-          map::textsNear(request.placed_floor_texts, ground, radius).empty())
-        continue;
+      if (placing->only_placed_texts && near.empty()) continue;
       if (request.narrow_to_placed_texts) {
-        placed_lexicons.push_back(map::textsNear(request.placed_floor_texts, ground, radius));
+        placed_lexicons.push_back(std::move(near));
         job.reading_lexicon = job.lexicon;
         job.lexicon = &placed_lexicons.back();
         job.placed = true;
@@ -459,6 +458,14 @@ bool contains(const Quad& quad, const cv::Point2f& p) {
   return cv::pointPolygonTest(std::vector<cv::Point2f>(quad.begin(), quad.end()), p, false) >= 0;
 }
 
+// Whether `inst`'s centre lies in the polygon of one of the first `count` of `found`.
+bool seenBefore(const TextInstance& inst, const std::vector<TextInstance>& found, size_t count) {
+  const cv::Point2f c = quadCentre(inst.polygon);
+  for (size_t i = 0; i < count; ++i)
+    if (contains(found[i].polygon, c)) return true;
+  return false;
+}
+
 }  // namespace
 
 std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
@@ -496,12 +503,7 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
           p = *raw;
       }
       if (!inside) continue;
-      if (skip_seen) {
-        const cv::Point2f c = quadCentre(inst.polygon);
-        bool seen = false;
-        for (size_t i = 0; i < found_before && !seen; ++i) seen = contains(out[i].polygon, c);
-        if (seen) continue;
-      }
+      if (skip_seen && seenBefore(inst, out, found_before)) continue;
       // Final corner fit at the raw image's resolution, on the ground plane.
       inst.polygon = refinedCorners(image, inst.polygon, options_, request.camera);
       out.push_back(std::move(inst));
@@ -525,12 +527,8 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
   // dropped.
   auto addUnseen = [&](std::vector<TextInstance> found) {
     const size_t found_before = out.size();
-    for (TextInstance& inst : found) {
-      const cv::Point2f c = quadCentre(inst.polygon);
-      bool seen = false;
-      for (size_t i = 0; i < found_before && !seen; ++i) seen = contains(out[i].polygon, c);
-      if (!seen) out.push_back(std::move(inst));
-    }
+    for (TextInstance& inst : found)
+      if (!seenBefore(inst, out, found_before)) out.push_back(std::move(inst));
   };
   if (ground && nets_->band_detector) {
     // The horizon band at full resolution; its crops are read from the band itself (a view

@@ -238,8 +238,8 @@ class PpOcrSpotter : public TextSpotter {
   // detection_max_side), the floor detector on a floor view (at the view's resolution), the
   // band detector on a raw image's horizon band (at full resolution).
   enum class DetectorRole { kScene, kFloorView, kRawBand };
-  // A floor view, or a window of one: `image` of detectAndRead is the part of the view from
-  // `origin` (view pixels) on.
+  // Where detectAndRead's `image` lies in a floor view: the whole view, or a mosaic of its
+  // windows (ocr/placed_windows.h).
   struct FloorWindow;
   std::vector<TextInstance> detectAndRead(const cv::Mat& image, const SpotRequest& request,
                                           const geometry::RigCamera* camera, DetectorRole role,

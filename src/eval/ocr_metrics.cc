@@ -44,6 +44,17 @@ const std::vector<std::string>& paintBins() {
 
 const std::string& paintBin(double paint_wear) { return paintBins()[paint_wear > 0.0 ? 1 : 0]; }
 
+const std::vector<std::string>& inkBins() {
+  static const std::vector<std::string> kBins = {"ink SNR under 8", "ink SNR 8-12", "ink SNR 12-20",
+                                                 "ink SNR 20 and more"};
+  return kBins;
+}
+
+const std::string& inkBin(double ink_snr) {
+  const auto& bins = inkBins();
+  return bins[ink_snr < 8.0 ? 0 : ink_snr < 12.0 ? 1 : ink_snr < 20.0 ? 2 : 3];
+}
+
 double readingAngleDeg(const Quad& polygon) {
   // Mid-point of the left edge to mid-point of the right edge: the reading direction.
   const cv::Point2d left = 0.5 * (cv::Point2d(polygon[0]) + cv::Point2d(polygon[3]));
@@ -159,6 +170,8 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
       out.push_back(&result_.parking_numbers_by_height[heightBin(
           geometry::apparentHeightPx(io::textPolygon(polygon)))]);
       if (label) out.push_back(&result_.parking_numbers_by_paint[paintBin(label->paint_wear)]);
+      if (label && label->ink_snr)
+        out.push_back(&result_.parking_numbers_by_ink[inkBin(*label->ink_snr)]);
     }
     return out;
   };

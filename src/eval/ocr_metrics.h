@@ -62,6 +62,9 @@ struct OcrEvaluation {
   // Parking numbers by their paint (paintBin of io::LabelInstance::paint_wear): intact or worn.
   // A false detection has no paint and counts in none (added later).
   std::map<std::string, OcrCounts> parking_numbers_by_paint;
+  // Parking numbers by how far their ink stands out of the sensor's noise (inkBin of
+  // io::LabelInstance::ink_snr); labels without it count in none (added later).
+  std::map<std::string, OcrCounts> parking_numbers_by_ink;
   // Per class, with every text at least kHeightRuleMinPx tall cared for (unless half
   // occluded), whatever its label's legibility: the simulator's rule until session 6, kept
   // so that figures compare across the change to the blur- and pitch-aware rule.
@@ -121,6 +124,11 @@ const std::string& heightBin(double height_px);
 // The bins of OcrEvaluation::parking_numbers_by_paint and the bin of a label's paint wear.
 const std::vector<std::string>& paintBins();
 const std::string& paintBin(double paint_wear);
+
+// The bins of OcrEvaluation::parking_numbers_by_ink, in increasing order, and the bin of a
+// label's ink SNR (sim::featureSnr; 5 is the labels' legibility floor).
+const std::vector<std::string>& inkBins();
+const std::string& inkBin(double ink_snr);
 
 // Reading direction of a polygon in the image, degrees in (-180, 180] (0 = left to right),
 // the same convention as io::LabelInstance::rotation_deg.

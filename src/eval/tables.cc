@@ -150,6 +150,16 @@ Table table3Paint(const OcrEvaluation& ocr) {
       "Paint", paintBins(), ocr.parking_numbers_by_paint);
 }
 
+Table table3Ink(const OcrEvaluation& ocr) {
+  return subsetTable(
+      "table3_ink", "Table 3 by ink contrast: parking numbers by their ink's signal to noise",
+      "Ink SNR: the labels' ink_snr, one reading feature's contrast against the floor summed "
+      "over its pixels, over the sensor noise (the simulator's light, exposure, paint and "
+      "wear); below 5 a number is not legible. Labels without it count in no row, nor do "
+      "false detections (their FP is 0).",
+      "Ink", inkBins(), ocr.parking_numbers_by_ink);
+}
+
 Table table3HeightRule(const OcrEvaluation& ocr) {
   return subsetTable(
       "table3_height_rule",
@@ -199,6 +209,7 @@ std::vector<Table> table3All(const OcrEvaluation& ocr,
                              const std::optional<AnomalyFilterCounts>& afm) {
   std::vector<Table> out = {table3(ocr, afm), table3Conditions(ocr), table3Heights(ocr),
                             table3Paint(ocr), table3HeightRule(ocr)};
+  if (!ocr.parking_numbers_by_ink.empty()) out.insert(out.begin() + 4, table3Ink(ocr));
   if (ocr.parking_numbers_per_frame_set.numbers > 0) out.push_back(table3FrameSets(ocr));
   if (ocr.parking_numbers_per_drive.numbers > 0) out.push_back(table3Drives(ocr));
   return out;

@@ -38,6 +38,9 @@ Table table3Conditions(const OcrEvaluation& ocr);
 Table table3Heights(const OcrEvaluation& ocr);
 // Parking numbers with intact and worn paint (OcrEvaluation::parking_numbers_by_paint).
 Table table3Paint(const OcrEvaluation& ocr);
+// Parking numbers by their ink's SNR (OcrEvaluation::parking_numbers_by_ink); table3All adds
+// it when the labels carry one.
+Table table3Ink(const OcrEvaluation& ocr);
 // Per class under the height-only legibility rule (OcrEvaluation::height_rule_by_class).
 Table table3HeightRule(const OcrEvaluation& ocr);
 // Parking numbers per frame set (OcrEvaluation::parking_numbers_per_frame_set).

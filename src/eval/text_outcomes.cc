@@ -61,6 +61,7 @@ nlohmann::json outcomeJson(const TextOutcome& outcome, const io::ImageLabels& tr
     j["truncated"] = l.truncated;
     j["rotation_deg"] = l.rotation_deg;
     j["paint_wear"] = l.paint_wear;
+    if (l.ink_snr) j["ink_snr"] = *l.ink_snr;
     j["polygon"] = pointsJson(io::pointQuad(l.polygon));
   }
   if (outcome.detection >= 0) {

@@ -99,6 +99,12 @@ LabelInstance readInstance(const json& j, const std::string& path, size_t index)
       fail(path, fmt::format("{}field 'paint_wear': expected a number in [0, 1], got {}", where,
                              inst.paint_wear));
   }
+  if (j.contains("ink_snr")) {
+    inst.ink_snr = number(j, "ink_snr", path, where);
+    if (!(*inst.ink_snr >= 0.0))
+      fail(path,
+           fmt::format("{}field 'ink_snr': expected a number >= 0, got {}", where, *inst.ink_snr));
+  }
   return inst;
 }
 
@@ -152,6 +158,7 @@ void saveLabels(const ImageLabels& labels, const std::string& path) {
                      {"rotation_deg", inst.rotation_deg},
                      {"paint_wear", inst.paint_wear}};
     if (inst.visible_polygon) instance["visible_polygon"] = polygonJson(*inst.visible_polygon);
+    if (inst.ink_snr) instance["ink_snr"] = *inst.ink_snr;
     instances.push_back(std::move(instance));
   }
   const json doc = {{"camera", labels.camera},

@@ -40,6 +40,10 @@ struct LabelInstance {
   // How worn the paint is, 0 (intact) to 1 (mostly erased): the simulator's wear of painted
   // floor text; 0 for other text and in labels written before session 17 (added later).
   double paint_wear = 0.0;
+  // Painted floor text: the signal-to-noise ratio of one reading feature of its ink against
+  // the floor (sim::featureSnr; not legible below 5). Absent for other text and in labels
+  // written before session 19 (added later).
+  std::optional<double> ink_snr;
 };
 
 struct ImageLabels {

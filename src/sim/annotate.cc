@@ -105,7 +105,16 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
     if (!projectable) continue;
     const double height = geometry::apparentHeightPx(poly);
     if (height <= 0.0 || height < options.min_labelled_height_px) continue;
-    const bool legible = isLegible(poly, characterCount(lm.text), options.blur, options.legibility);
+    const int characters = characterCount(lm.text);
+    bool legible = isLegible(poly, characters, options.blur, options.legibility);
+    std::optional<double> ink_snr;
+    if (item.floor_decal >= 0 && options.floor_ink_contrast && options.channel_noise > 0.0) {
+      const Eigen::Vector2d centre = 0.25 * (poly[0] + poly[1] + poly[2] + poly[3]);
+      const InkContrast ink{options.floor_ink_contrast(item.floor_decal, centre),
+                            options.channel_noise};
+      ink_snr = featureSnr(poly, characters, ink, options.legibility);
+      legible = legible && *ink_snr >= options.legibility.min_feature_snr;
+    }
     // Sample points on the text: inside the image, and seen or hidden.
     int inside = 0, hidden_count = 0, total = 0;
     const Eigen::Vector3d r = lm.readingDirection() * lm.width;
@@ -130,6 +139,7 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
     inst.occluded_fraction = static_cast<double>(hidden_count) / inside;
     inst.legible = legible;
     inst.paint_wear = item.paint_wear;
+    inst.ink_snr = ink_snr;
     inst.truncated = inside < total;
     for (const auto& c : poly) inst.truncated = inst.truncated || !camera.model.inImage(c);
     // What an annotator would box: the part that shows, when an edge, an obstacle or the car

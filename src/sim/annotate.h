@@ -3,6 +3,7 @@
 // and licence plates) projected through the vehicle pose and the camera, with truncation,
 // occlusion by pillars, cars and the recording car itself (the camera's body), and the reading
 // direction's angle in the image.
+#include <functional>
 #include <vector>
 
 #include "geometry/pose.h"
@@ -20,6 +21,12 @@ struct AnnotateOptions {
   // so that a detector that still finds it is neither rewarded nor counted wrong.
   LegibilityOptions legibility;
   ImageBlur blur;  // the camera's, imageBlur(); none by default
+  // Painted floor text must also stand out of the sensor's noise (inkStandsOut), when both
+  // are given: the contrast of floor decal `decal` seen at image point `pixel`
+  // (Renderer::floorInkContrast) and the noise per colour channel (LightingOptions::
+  // noise_sigma). The label then carries the feature's SNR (io::LabelInstance::ink_snr).
+  std::function<double(int decal, const Eigen::Vector2d& pixel)> floor_ink_contrast;
+  double channel_noise = 0.0;
   double min_labelled_height_px = 3.0;
   double max_distance = 30.0;        // metres from the camera
   double min_inside_fraction = 0.3;  // of the text's sample points inside the image

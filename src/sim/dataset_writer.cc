@@ -241,6 +241,10 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
         labels.height = cam.model.height;
         AnnotateOptions annotate;
         annotate.blur = imageBlur(light, cam);
+        annotate.floor_ink_contrast = [&](int decal, const Eigen::Vector2d& pixel) {
+          return renderer.floorInkContrast(c, pixel, decal);
+        };
+        annotate.channel_noise = light.noise_sigma;
         labels.instances = annotateImage(*garage, level, cam, state.pose, annotate);
         io::saveLabels(labels, (dir / "labels" / cam.name / (stem + ".json")).string());
         io::saveIcdarLabels(labels, (dir / "labels" / cam.name / (stem + ".txt")).string());

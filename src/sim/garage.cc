@@ -68,7 +68,9 @@ struct Builder {
     cv::Mat ink = raster.render(font, lm.text, ink_px);
     const double tpm = ink.rows / lm.height;  // exact: the ink box is lm.height tall
     lm.width = ink.cols / tpm;
+    const double ink_before = cv::sum(ink)[0];
     if (wear > 0.0) wearInk(ink, wear, rng);
+    const double ink_after = cv::sum(ink)[0];
     const int pad = 6;
     g.textures.emplace_back(padInk(ink, pad));
     Decal d;
@@ -84,6 +86,7 @@ struct Builder {
     d.color = color;
     d.opacity = opacity;
     d.wear = static_cast<float>(wear);
+    d.ink_kept = ink_before > 0.0 ? static_cast<float>(ink_after / ink_before) : 1.0f;
     return d;
   }
 
@@ -303,7 +306,8 @@ void buildLevel(Builder& b, int level_index) {
           g.textures.pop_back();
           lm.height *= (sw - 0.45) / lm.width;
         }
-        L.texts.push_back({lm, true, L.floor_decals.back().wear});
+        L.texts.push_back(
+            {lm, true, L.floor_decals.back().wear, static_cast<int>(L.floor_decals.size()) - 1});
         b.map_landmarks.push_back(lm);
 
         // A parked car in a share of the slots.
@@ -412,7 +416,7 @@ void buildLevel(Builder& b, int level_index) {
       d = b.textDecal(lm, pick(rng, g.fonts), 250.0, kWhitePaint, 0.9f, 0.0);
     }
     L.floor_decals.push_back(d);
-    L.texts.push_back({lm, true, d.wear});
+    L.texts.push_back({lm, true, d.wear, static_cast<int>(L.floor_decals.size()) - 1});
     b.map_landmarks.push_back(lm);
     floor_marks.push_back({c, 0.5 * lm.width});
   };

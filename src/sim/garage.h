@@ -39,6 +39,9 @@ struct Decal {
   float opacity = 1.0f;
   // How worn the ink is (wearInk's severity: 0 intact, up to 1 mostly erased).
   float wear = 0.0f;
+  // The share of the rasterized ink that the wear left (1: intact): the worn text's mean
+  // ink, for its contrast against the floor (Renderer::floorInkContrast).
+  float ink_kept = 1.0f;
 };
 
 // Ceiling lamp: an emissive rectangle on the ceiling, also the light source of the level.
@@ -61,6 +64,7 @@ struct TextItem {
   map::Landmark landmark;
   bool in_map = true;
   float paint_wear = 0.0f;  // the decal's Decal::wear (painted floor text; 0 elsewhere)
+  int floor_decal = -1;     // its decal in GarageLevel::floor_decals (painted floor text)
 };
 
 struct GarageLevel {

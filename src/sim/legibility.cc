@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "sim/renderer.h"
 
@@ -45,6 +46,25 @@ bool isLegible(const geometry::TextPolygon& p, int characters, const ImageBlur& 
   const double c = options.cycles_per_character;
   return blurModulation(blur, along, c / pitch) >= options.min_modulation &&
          blurModulation(blur, across, c / height) >= options.min_modulation;
+}
+
+double featureSnr(const geometry::TextPolygon& p, int characters, const InkContrast& ink,
+                  const LegibilityOptions& options) {
+  const double height = geometry::apparentHeightPx(p);
+  const double pitch = geometry::readingLengthPx(p) / std::max(1, characters);
+  const double half_cycle = 0.5 / options.cycles_per_character;  // of a pitch, of a height
+  const double area = std::max(0.0, pitch * half_cycle) * std::max(0.0, height * half_cycle);
+  // Var(0.299 R + 0.587 G + 0.114 B) for independent channels of equal variance.
+  const double luma_noise =
+      ink.channel_noise * std::sqrt(0.299 * 0.299 + 0.587 * 0.587 + 0.114 * 0.114);
+  const double signal = std::abs(ink.luma_levels) * std::sqrt(area);
+  if (!(luma_noise > 0.0)) return signal > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+  return signal / luma_noise;
+}
+
+bool inkStandsOut(const geometry::TextPolygon& p, int characters, const InkContrast& ink,
+                  const LegibilityOptions& options) {
+  return featureSnr(p, characters, ink, options) >= options.min_feature_snr;
 }
 
 int characterCount(const std::string& text) {

@@ -7,7 +7,9 @@
 // of reading I", Vision Research 1985: reading speed is unimpaired once text passes 2 cycles
 // per character), along the reading direction per character pitch and across it per glyph
 // height, below the pixel grid's Nyquist limit and not damped by the camera's blur below
-// the usual limiting-resolution modulation of 10 %.
+// the usual limiting-resolution modulation of 10 %. Nor is size enough when the ink hardly
+// differs from the ground: worn paint in weak light drowns in the sensor's noise, which the
+// contrast rule (inkStandsOut) asks of painted floor text.
 #include <string>
 
 #include "geometry/rig.h"
@@ -33,6 +35,10 @@ struct LegibilityOptions {
   double min_height_px = 8.0;
   double cycles_per_character = 2.0;
   double min_modulation = 0.1;
+  // The contrast rule (inkStandsOut): Rose's criterion, a feature is seen when its signal
+  // over the noise integrated on its area reaches about 5 (A. Rose, "The sensitivity
+  // performance of the human eye on an absolute scale", JOSA 1948; the usual k = 5).
+  double min_feature_snr = 5.0;
 };
 
 // The image's modulation (0..1) of a sine of `cycles_per_px` along the image `direction`
@@ -45,6 +51,25 @@ double blurModulation(const ImageBlur& blur, const Eigen::Vector2d& direction,
 // (reading order: top-left, top-right, bottom-right, bottom-left).
 bool isLegible(const geometry::TextPolygon& polygon, int characters, const ImageBlur& blur,
                const LegibilityOptions& options = {});
+
+// The contrast a text's ink makes in the image and the sensor's noise, both before the blur.
+struct InkContrast {
+  double luma_levels = 0.0;    // ink against the ground under it, 8-bit luma
+  double channel_noise = 0.0;  // Gaussian noise per colour channel, 8-bit levels
+};
+
+// The signal-to-noise ratio of one reading feature of the text: half a cycle of
+// `cycles_per_character` along the reading direction by half a cycle across the glyph height
+// (the same features the size rule asks the image to carry), its ink contrast summed over its
+// pixels against white noise, the noise of BT.601 luma from independent channels.
+double featureSnr(const geometry::TextPolygon& polygon, int characters, const InkContrast& ink,
+                  const LegibilityOptions& options = {});
+
+// Whether the ink stands out of the noise by Rose's criterion: featureSnr >= min_feature_snr.
+// Worn paint in a dim corner of a noisy image fails it, however large the text: no reader
+// reads what does not show. Blur is the size rule's part (isLegible).
+bool inkStandsOut(const geometry::TextPolygon& polygon, int characters, const InkContrast& ink,
+                  const LegibilityOptions& options = {});
 
 // Characters of a UTF-8 text (code points), at least 1.
 int characterCount(const std::string& text);

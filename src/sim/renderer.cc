@@ -932,6 +932,39 @@ struct Renderer::Impl {
     }
   }
 
+  double floorInkContrast(size_t camera, const Eigen::Vector2d& pixel, int decal) const {
+    const Decal& d = L.floor_decals.at(static_cast<size_t>(decal));
+    const CameraRays& cr = (*rays).at(camera);
+    const int x = std::clamp(static_cast<int>(std::lround(pixel.x())), 0, cr.width - 1);
+    const int y = std::clamp(static_cast<int>(std::lround(pixel.y())), 0, cr.height - 1);
+    const float vignette = cr.vignette[static_cast<size_t>(y) * cr.width + x];
+    const Eigen::Vector3f centre =
+        d.origin + 0.5f * d.size_u * d.axis_u + 0.5f * d.size_v * d.axis_v;
+    // The bare floor under the text as shadeFloorBase shades it, the concrete averaged over a
+    // glyph's height.
+    const float ctpm = static_cast<float>(g.concrete_texels_per_metre);
+    const float stpm = static_cast<float>(g.shade_texels_per_metre);
+    const float c =
+        g.concrete.sampleNearestLevel(centre.x() * ctpm, centre.y() * ctpm, d.size_v * ctpm);
+    const float shade = floor_shade_grid.at(centre.x() * stpm - 0.5f, centre.y() * stpm - 0.5f);
+    const Eigen::Vector3f floor = g.floor_albedo * (shade * (0.45f + 0.95f * c));
+    // The decal's blend (shadeFloorMarkings) at its mean ink: the opacity times what wear left.
+    const Eigen::Vector3f ink = floor + d.opacity * d.ink_kept * (d.color - floor);
+    const float scale = floor_light_grid.at(centre.x() * light_tpm, centre.y() * light_tpm) *
+                        light.exposure * (kLutSize - 1) / kLutMax * vignette;
+    // Pass 4's tone curve, then BT.601 luma.
+    auto luma = [&](const Eigen::Vector3f& albedo) {
+      double value = 0.0;
+      const double weight[3] = {0.299, 0.587, 0.114};  // R, G, B
+      for (int ch = 0; ch < 3; ++ch) {
+        const int idx = std::clamp(static_cast<int>(albedo[ch] * scale), 0, kLutSize - 1);
+        value += weight[ch] * gamma_lut[static_cast<size_t>(idx)];
+      }
+      return value;
+    };
+    return std::abs(luma(ink) - luma(floor));
+  }
+
   // Albedo and irradiance of a pixel on a box, the ceiling or a wall.
   void shadeOther(const PixelHit& h, Eigen::Vector3f& albedo, float& e) const {
     const Eigen::Vector3f& p = h.p;
@@ -985,6 +1018,12 @@ cv::Mat Renderer::renderCamera(size_t camera, const geometry::Pose2& map_from_ve
                                uint64_t noise_seed) const {
   return impl_->renderCamera(camera, map_from_vehicle, noise_seed);
 }
+
+double Renderer::floorInkContrast(size_t camera, const Eigen::Vector2d& pixel, int decal) const {
+  return impl_->floorInkContrast(camera, pixel, decal);
+}
+
+const LightingOptions& Renderer::light() const { return impl_->light; }
 
 std::vector<cv::Mat> Renderer::render(const geometry::Pose2& map_from_vehicle,
                                       uint64_t noise_seed) const {

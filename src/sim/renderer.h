@@ -60,6 +60,12 @@ class Renderer {
   std::vector<cv::Mat> render(const geometry::Pose2& map_from_vehicle, uint64_t noise_seed) const;
 
   const GarageLevel& level() const;
+  const LightingOptions& light() const;
+  // The noise-free contrast, in 8-bit luma levels before the blur, between floor text
+  // `decal` (index into level().floor_decals) at its mean ink (opacity times the share that
+  // wear left) and the bare floor under it, at the text's centre under this drive's lamps,
+  // exposure and tone curve, seen through `pixel` of `camera` (vignetting).
+  double floorInkContrast(size_t camera, const Eigen::Vector2d& pixel, int decal) const;
 
  private:
   struct Impl;

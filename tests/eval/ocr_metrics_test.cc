@@ -166,6 +166,42 @@ TEST(OcrMetrics, ParkingNumbersAreCountedByTheirPaint) {
   EXPECT_EQ(paintBin(0.01), "worn paint");
 }
 
+// Numbers go to the bin of their ink's SNR; labels without one, and false detections, to none.
+TEST(OcrMetrics, ParkingNumbersAreCountedByTheirInkSnr) {
+  io::ImageLabels truth;
+  truth.instances = {
+      label(0, 0, 100, 30, "B2-117", TextClass::kParkingNumber),    // SNR 6.5, found
+      label(200, 0, 300, 30, "B2-118", TextClass::kParkingNumber),  // SNR 6.5, missed
+      label(400, 0, 500, 30, "B2-119", TextClass::kParkingNumber),  // SNR 30, found
+      label(600, 0, 700, 30, "B2-121", TextClass::kParkingNumber),  // no SNR, found
+  };
+  truth.instances[0].ink_snr = 6.5;
+  truth.instances[1].ink_snr = 6.5;
+  truth.instances[2].ink_snr = 30.0;
+  const std::vector<ocr::TextInstance> detections = {
+      detection(0, 0, 100, 30, "B2-117", "B2-117", TextClass::kParkingNumber),
+      detection(400, 0, 500, 30, "B2-119", "B2-119", TextClass::kParkingNumber),
+      detection(600, 0, 700, 30, "B2-121", "B2-121", TextClass::kParkingNumber),
+      detection(800, 0, 900, 30, "B2-120", "B2-120", TextClass::kParkingNumber),  // false
+  };
+  OcrEvaluator evaluator;
+  evaluator.add(truth, detections, {});
+  const auto& bins = evaluator.result().parking_numbers_by_ink;
+  ASSERT_EQ(bins.size(), 2u);
+  const OcrCounts& faint = bins.at("ink SNR under 8");
+  const OcrCounts& clear = bins.at("ink SNR 20 and more");
+  EXPECT_EQ(faint.truths, 2u);
+  EXPECT_EQ(faint.tp, 1u);
+  EXPECT_EQ(faint.fn, 1u);
+  EXPECT_EQ(clear.truths, 1u);
+  EXPECT_EQ(clear.tp, 1u);
+  EXPECT_EQ(faint.fp + clear.fp, 0u);
+  EXPECT_EQ(evaluator.result().overall.truths, 4u);
+  EXPECT_EQ(inkBin(7.99), "ink SNR under 8");
+  EXPECT_EQ(inkBin(8.0), "ink SNR 8-12");
+  EXPECT_EQ(inkBin(19.9), "ink SNR 12-20");
+}
+
 TEST(OcrMetrics, TheHeightOnlyRuleCaresForTextLabelledIllegibleButTallEnough) {
   io::ImageLabels truth;
   truth.instances = {

@@ -26,6 +26,7 @@ ImageLabels sampleLabels() {
   number.landmark_id = "B2-117";
   number.rotation_deg = 37.25;
   number.paint_wear = 0.625;
+  number.ink_snr = 7.25;
   LabelInstance pillar = number;
   pillar.text = "C3";
   pillar.cls = map::TextClass::kPillar;
@@ -34,6 +35,7 @@ ImageLabels sampleLabels() {
   pillar.landmark_id = "P-C3";
   pillar.rotation_deg = 180.0;
   pillar.paint_wear = 0.0;
+  pillar.ink_snr.reset();
   pillar.visible_polygon = {Eigen::Vector2d(100.4, 200.6), Eigen::Vector2d(140.25, 200.8),
                             Eigen::Vector2d(139.5, 240.0), Eigen::Vector2d(99.0, 239.0)};
   LabelInstance thin = number;
@@ -81,6 +83,7 @@ TEST_F(LabelsTest, JsonRoundTripIsExact) {
     EXPECT_EQ(a.landmark_id, b.landmark_id);
     EXPECT_EQ(a.rotation_deg, b.rotation_deg);
     EXPECT_EQ(a.paint_wear, b.paint_wear);
+    EXPECT_EQ(a.ink_snr, b.ink_snr);
     ASSERT_EQ(a.visible_polygon.has_value(), b.visible_polygon.has_value());
     if (a.visible_polygon) {
       for (int k = 0; k < 4; ++k) EXPECT_EQ((*a.visible_polygon)[k], (*b.visible_polygon)[k]);
@@ -120,6 +123,20 @@ TEST_F(LabelsTest, PaintWearDefaultsToIntactAndMustLieBetweenZeroAndOne) {
   EXPECT_EQ(loadError(bad), "labels " + bad +
                                 ": instance #0: field 'paint_wear': expected a number in [0, 1], "
                                 "got 1.5");
+}
+
+// Labels written before session 19, and text other than painted floor text, have no ink_snr.
+// A negative one is an error.
+TEST_F(LabelsTest, InkSnrIsOptionalAndNeverNegative) {
+  const std::string old = write("old.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
+      "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "text": "A",
+      "class": "parking_number"}]})");
+  EXPECT_FALSE(loadLabels(old).instances.at(0).ink_snr.has_value());
+  const std::string bad = write("bad.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
+      "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "text": "A",
+      "class": "parking_number", "ink_snr": -2}]})");
+  EXPECT_EQ(loadError(bad),
+            "labels " + bad + ": instance #0: field 'ink_snr': expected a number >= 0, got -2");
 }
 
 TEST_F(LabelsTest, MissingFieldIsNamed) {

@@ -208,8 +208,9 @@ Table table3Drives(const OcrEvaluation& ocr) {
 std::vector<Table> table3All(const OcrEvaluation& ocr,
                              const std::optional<AnomalyFilterCounts>& afm) {
   std::vector<Table> out = {table3(ocr, afm), table3Conditions(ocr), table3Heights(ocr),
-                            table3Paint(ocr), table3HeightRule(ocr)};
-  if (!ocr.parking_numbers_by_ink.empty()) out.insert(out.begin() + 4, table3Ink(ocr));
+                            table3Paint(ocr)};
+  if (!ocr.parking_numbers_by_ink.empty()) out.push_back(table3Ink(ocr));
+  out.push_back(table3HeightRule(ocr));
   if (ocr.parking_numbers_per_frame_set.numbers > 0) out.push_back(table3FrameSets(ocr));
   if (ocr.parking_numbers_per_drive.numbers > 0) out.push_back(table3Drives(ocr));
   return out;

@@ -138,7 +138,8 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
     inst.landmark_id = lm.id;
     inst.occluded_fraction = static_cast<double>(hidden_count) / inside;
     inst.legible = legible;
-    inst.paint_wear = item.paint_wear;
+    if (item.floor_decal >= 0)
+      inst.paint_wear = L.floor_decals.at(static_cast<size_t>(item.floor_decal)).wear;
     inst.ink_snr = ink_snr;
     inst.truncated = inside < total;
     for (const auto& c : poly) inst.truncated = inst.truncated || !camera.model.inImage(c);

@@ -306,8 +306,7 @@ void buildLevel(Builder& b, int level_index) {
           g.textures.pop_back();
           lm.height *= (sw - 0.45) / lm.width;
         }
-        L.texts.push_back(
-            {lm, true, L.floor_decals.back().wear, static_cast<int>(L.floor_decals.size()) - 1});
+        L.texts.push_back({lm, true, static_cast<int>(L.floor_decals.size()) - 1});
         b.map_landmarks.push_back(lm);
 
         // A parked car in a share of the slots.
@@ -416,7 +415,7 @@ void buildLevel(Builder& b, int level_index) {
       d = b.textDecal(lm, pick(rng, g.fonts), 250.0, kWhitePaint, 0.9f, 0.0);
     }
     L.floor_decals.push_back(d);
-    L.texts.push_back({lm, true, d.wear, static_cast<int>(L.floor_decals.size()) - 1});
+    L.texts.push_back({lm, true, static_cast<int>(L.floor_decals.size()) - 1});
     b.map_landmarks.push_back(lm);
     floor_marks.push_back({c, 0.5 * lm.width});
   };

@@ -63,8 +63,7 @@ struct Slot {
 struct TextItem {
   map::Landmark landmark;
   bool in_map = true;
-  float paint_wear = 0.0f;  // the decal's Decal::wear (painted floor text; 0 elsewhere)
-  int floor_decal = -1;     // its decal in GarageLevel::floor_decals (painted floor text)
+  int floor_decal = -1;  // its decal in GarageLevel::floor_decals (painted floor text)
 };
 
 struct GarageLevel {

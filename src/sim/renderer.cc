@@ -606,7 +606,7 @@ struct Renderer::Impl {
     const float wall_x[2] = {0.0f - o.x(), static_cast<float>(g.size.x()) - o.x()};
     const float wall_y[2] = {0.0f - o.y(), static_cast<float>(g.size.y()) - o.y()};
     const float wall_z[2] = {0.0f - o.z(), static_cast<float>(g.ceiling_height) - o.z()};
-    const float exposure_scale = light.exposure * (kLutSize - 1) / kLutMax;
+    const float exposure_scale = exposureScale();
 #if defined(__SSE2__)
     const __m128 v_cos = _mm_set1_ps(cos_yaw), v_sin = _mm_set1_ps(sin_yaw);
     const __m128 v_wall_x0 = _mm_set1_ps(wall_x[0]), v_wall_x1 = _mm_set1_ps(wall_x[1]);
@@ -852,15 +852,15 @@ struct Renderer::Impl {
   }
 
   // Floor albedo without markings (concrete x shade) and irradiance of the listed pixels,
-  // four at a time where SSE2 is there (the same operations as the scalar loop).
+  // four at a time where SSE2 is there (the same operations as bareFloorAlbedo).
   void shadeFloorBase(const PixelHit* hits, const int* pixels, int count, Eigen::Vector3f* albedo,
                       float* irradiance) const {
-    const float ctpm = static_cast<float>(g.concrete_texels_per_metre);
-    const float stpm = static_cast<float>(g.shade_texels_per_metre);
-    const Eigen::Vector3f floor_albedo = g.floor_albedo;
     int k = 0;
 #if defined(__SSE2__)
     if (floor_shade_grid.vectorizable() && floor_light_grid.vectorizable()) {
+      const float ctpm = static_cast<float>(g.concrete_texels_per_metre);
+      const float stpm = static_cast<float>(g.shade_texels_per_metre);
+      const Eigen::Vector3f floor_albedo = g.floor_albedo;
       const __m128 v_ctpm = _mm_set1_ps(ctpm), v_stpm = _mm_set1_ps(stpm);
       const __m128 v_ltpm = _mm_set1_ps(light_tpm), half = _mm_set1_ps(0.5f);
       for (; k + 4 <= count; k += 4) {
@@ -899,13 +899,23 @@ struct Renderer::Impl {
     for (; k < count; ++k) {
       const int x = pixels[k];
       const Eigen::Vector3f& p = hits[x].p;
-      const float c =
-          g.concrete.sampleNearestLevel(p.x() * ctpm, p.y() * ctpm, hits[x].footprint * ctpm);
-      const float shade = floor_shade_grid.at(p.x() * stpm - 0.5f, p.y() * stpm - 0.5f);
-      albedo[x] = floor_albedo * (shade * (0.45f + 0.95f * c));
+      albedo[x] = bareFloorAlbedo(p, hits[x].footprint);
       irradiance[x] = floor_light_grid.at(p.x() * light_tpm, p.y() * light_tpm);
     }
   }
+
+  // The floor's albedo without markings at p (concrete x shade), the concrete sampled at a
+  // footprint of `footprint_m` metres: shadeFloorBase's scalar path, one point at a time.
+  Eigen::Vector3f bareFloorAlbedo(const Eigen::Vector3f& p, float footprint_m) const {
+    const float ctpm = static_cast<float>(g.concrete_texels_per_metre);
+    const float stpm = static_cast<float>(g.shade_texels_per_metre);
+    const float c = g.concrete.sampleNearestLevel(p.x() * ctpm, p.y() * ctpm, footprint_m * ctpm);
+    const float shade = floor_shade_grid.at(p.x() * stpm - 0.5f, p.y() * stpm - 0.5f);
+    return g.floor_albedo * (shade * (0.45f + 0.95f * c));
+  }
+
+  // Irradiance times this is the tone curve's index (before vignetting).
+  float exposureScale() const { return light.exposure * (kLutSize - 1) / kLutMax; }
 
   // Painted lines and text decals over the floor albedo of the listed pixels.
   void shadeFloorMarkings(const PixelHit* hits, const int* pixels, int count,
@@ -940,18 +950,12 @@ struct Renderer::Impl {
     const float vignette = cr.vignette[static_cast<size_t>(y) * cr.width + x];
     const Eigen::Vector3f centre =
         d.origin + 0.5f * d.size_u * d.axis_u + 0.5f * d.size_v * d.axis_v;
-    // The bare floor under the text as shadeFloorBase shades it, the concrete averaged over a
-    // glyph's height.
-    const float ctpm = static_cast<float>(g.concrete_texels_per_metre);
-    const float stpm = static_cast<float>(g.shade_texels_per_metre);
-    const float c =
-        g.concrete.sampleNearestLevel(centre.x() * ctpm, centre.y() * ctpm, d.size_v * ctpm);
-    const float shade = floor_shade_grid.at(centre.x() * stpm - 0.5f, centre.y() * stpm - 0.5f);
-    const Eigen::Vector3f floor = g.floor_albedo * (shade * (0.45f + 0.95f * c));
+    // The bare floor under the text, the concrete averaged over a glyph's height.
+    const Eigen::Vector3f floor = bareFloorAlbedo(centre, d.size_v);
     // The decal's blend (shadeFloorMarkings) at its mean ink: the opacity times what wear left.
     const Eigen::Vector3f ink = floor + d.opacity * d.ink_kept * (d.color - floor);
     const float scale = floor_light_grid.at(centre.x() * light_tpm, centre.y() * light_tpm) *
-                        light.exposure * (kLutSize - 1) / kLutMax * vignette;
+                        exposureScale() * vignette;
     // Pass 4's tone curve, then BT.601 luma.
     auto luma = [&](const Eigen::Vector3f& albedo) {
       double value = 0.0;

@@ -54,6 +54,7 @@ struct SpotterArgs {
   float unplaced_class_weight = ocr::PpOcrOptions{}.unplaced_class_weight;
   double placed_open_world_weight = ocr::PpOcrOptions{}.placed_lexicon.open_world_weight;
   bool reread_unmatched = !ocr::PpOcrOptions{}.reread_margins.empty();
+  bool placed_size = ocr::PpOcrOptions{}.placed_size.has_value();
   bool reread_by_both_recognizers = !ocr::PpOcrOptions{}.reread_by_fallback_only;
   std::vector<float> floor_read_expand = {ocr::PpOcrOptions{}.floor_read_expand_x,
                                           ocr::PpOcrOptions{}.floor_read_expand_y};
@@ -129,6 +130,10 @@ struct SpotterArgs {
     cmd->add_flag("--reread-unmatched,!--no-reread-unmatched", reread_unmatched,
                   "Under a predicted pose, read a floor box that matched no placed text again "
                   "with a larger margin, by the fallback recognizer (default: on)");
+    cmd->add_flag("--placed-size,!--no-placed-size", placed_size,
+                  "Under a predicted pose, hold a floor box read as a text placed near it to "
+                  "that text's size on the floor: tightened when too tall or long, refused as "
+                  "that text when far too short (default: on)");
     cmd->add_flag("--reread-by-both-recognizers", reread_by_both_recognizers,
                   "... by the first recognizer too (more time an image; with session 14's two "
                   "margins it read 0.1 points more)");
@@ -189,6 +194,7 @@ inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   options.unplaced_class_weight = args.unplaced_class_weight;
   options.placed_lexicon.open_world_weight = args.placed_open_world_weight;
   if (!args.reread_unmatched) options.reread_margins.clear();
+  if (!args.placed_size) options.placed_size.reset();
   options.reread_by_fallback_only = !args.reread_by_both_recognizers;
   options.floor_read_expand_x = args.floor_read_expand.at(0);
   options.floor_read_expand_y = args.floor_read_expand.at(1);

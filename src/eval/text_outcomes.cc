@@ -72,6 +72,7 @@ nlohmann::json outcomeJson(const TextOutcome& outcome, const io::ImageLabels& tr
                      {"lexicon_match", d.lexicon_match},
                      {"second_opinion", d.second_opinion},
                      {"partial", d.partial},
+                     {"sized_by_map", d.sized_by_map},
                      {"class", map::toString(d.cls)},
                      {"detection_score", d.detection_score},
                      {"polygon", pointsJson(d.polygon)}};

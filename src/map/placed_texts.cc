@@ -14,7 +14,7 @@ std::vector<PlacedText> placeFloorTexts(const HdMap& map, const geometry::Pose2&
     if (l->surface != Surface::kGround) continue;
     const Eigen::Vector2d reading_in_map = l->readingDirection().head<2>();
     placed.push_back({l->text, vehicle_from_map * Eigen::Vector2d(l->position.head<2>()),
-                      vehicle_from_map.rotation() * reading_in_map, l->cls});
+                      vehicle_from_map.rotation() * reading_in_map, l->cls, l->width, l->height});
   }
   return placed;
 }

@@ -15,12 +15,14 @@
 namespace parkloc::map {
 
 // A map text, where its centre lies on the floor and which way it reads, in the vehicle frame
-// (metres; a unit vector), and its class.
+// (metres; a unit vector), its class, and its size on the floor (metres; 0 when unknown).
 struct PlacedText {
   std::string text;
   Eigen::Vector2d vehicle_xy = Eigen::Vector2d::Zero();
   Eigen::Vector2d reading = Eigen::Vector2d::UnitX();
   TextClass cls = TextClass::kParkingNumber;
+  double width = 0.0;   // along the reading direction
+  double height = 0.0;  // across it
 };
 
 // How far from the vehicle a text can still show in a camera's floor view (ocr::GroundView

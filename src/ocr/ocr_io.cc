@@ -41,6 +41,7 @@ nlohmann::json toJson(const TextInstance& inst) {
           {"lexicon_match", inst.lexicon_match},
           {"second_opinion", inst.second_opinion},
           {"partial", inst.partial},
+          {"sized_by_map", inst.sized_by_map},
           {"class", map::toString(inst.cls)},
           {"class_id", static_cast<int>(inst.cls)},
           {"detection_score", inst.detection_score},
@@ -58,7 +59,7 @@ nlohmann::json toJson(const std::vector<TextInstance>& instances) {
 std::string describe(const TextInstance& inst) {
   std::string corners;
   for (const auto& p : inst.polygon) corners += fmt::format(" ({:.1f},{:.1f})", p.x, p.y);
-  return fmt::format("{:<10} [{}] rec {:.2f} det {:.2f} cls {:.2f} ({}; raw {}) TL,TR,BR,BL:{}",
+  return fmt::format("{:<10} [{}] rec {:.2f} det {:.2f} cls {:.2f} ({}; raw {}){} TL,TR,BR,BL:{}",
                      inst.text.empty() ? "(unread)" : inst.text, map::toString(inst.cls),
                      inst.recognition_score, inst.detection_score, inst.class_score,
                      inst.second_opinion  ? "lexicon, second opinion"
@@ -66,7 +67,7 @@ std::string describe(const TextInstance& inst) {
                      : inst.lexicon_match ? "lexicon"
                      : inst.text.empty()  ? "unread"
                                           : "free",
-                     inst.raw_text, corners);
+                     inst.raw_text, inst.sized_by_map ? " sized by the map" : "", corners);
 }
 
 cv::Mat drawInstances(const cv::Mat& image, const std::vector<TextInstance>& instances) {

@@ -31,6 +31,9 @@ struct TextInstance {
   // image border, read against the texts placed near it: SpotRequest::narrow_to_placed_texts):
   // `text` is the whole text, `polygon` spans the part (added later).
   bool partial = false;
+  // The box was tightened to the size the map gives the text it was read as (under a
+  // predicted pose: PpOcrOptions::placed_size), its corners no longer all the ink's.
+  bool sized_by_map = false;
   map::TextClass cls = map::TextClass::kOther;
   float detection_score = 0.f;
   float recognition_score = 0.f;  // calibrated probability of `text`

@@ -37,6 +37,8 @@ TEST(PlaceFloorTexts, PutsTheFloorTextsOfTheLevelAroundTheVehicleInItsFrame) {
   ASSERT_EQ(placed.size(), 2u);  // not B2's, not the pillar's, not the one 20 m away
   for (const PlacedText& p : placed) {
     EXPECT_EQ(p.cls, TextClass::kParkingNumber);
+    EXPECT_EQ(p.width, 1.0);  // the map's size, which a frame change keeps
+    EXPECT_EQ(p.height, 0.5);
     // Both read east (heading 0): to the vehicle's right.
     EXPECT_NEAR(p.reading.x(), 0.0, 1e-9);
     EXPECT_NEAR(p.reading.y(), -1.0, 1e-9);

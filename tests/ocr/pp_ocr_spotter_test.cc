@@ -249,6 +249,48 @@ TEST_F(PpOcrSpotterTest, FloorTextIsReadOnlyTheWayTheTextsPlacedNearItRead) {
   EXPECT_TRUE(found[0].lexicon_match);
 }
 
+// A floor box read as a text placed near it is held to that text's size on the floor: kept at
+// the map's true size, tightened about its centre when the map's text is thinner than the box,
+// and refused as that text when the map's text is far longer than the box.
+TEST_F(PpOcrSpotterTest, AFloorBoxReadAsAPlacedTextIsHeldToItsSize) {
+  SpotRequest request = leftFloorRequest({"B2-117"});
+  const auto scene =
+      testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
+  const Eigen::Vector2d reading(-1.0, 0.0);
+  auto placedOfSize = [&](double width, double height) {
+    return std::vector<map::PlacedText>{
+        {"B2-117", {2.0, 2.6}, reading, map::TextClass::kParkingNumber, width, height}};
+  };
+  request.placed_floor_texts = placedOfSize(1.2, 0.45);
+  auto found = spotter_->spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_FALSE(found[0].sized_by_map);
+  EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), 10.0);
+
+  request.placed_floor_texts = placedOfSize(1.2, 0.2);
+  found = spotter_->spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_TRUE(found[0].sized_by_map);
+  EXPECT_LT(quadHeight(found[0].polygon), 0.7 * quadHeight(scene.truth));
+  EXPECT_LT(cv::norm(quadCentre(found[0].polygon) - quadCentre(scene.truth)), 5.0);
+
+  request.placed_floor_texts = placedOfSize(3.0, 0.45);
+  found = spotter_->spot(scene.image, request);
+  for (const TextInstance& inst : found) {
+    EXPECT_FALSE(inst.lexicon_match);
+    EXPECT_NE(inst.text, "B2-117");
+  }
+
+  PpOcrOptions without;
+  without.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  without.placed_size.reset();
+  found = PpOcrSpotter(without).spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);  // the same box, unchecked
+}
+
 // Under a predicted pose the map's classes weigh in: the same floor number is a parking
 // number where the map paints one, and other floor text where the map paints its "STOP".
 TEST(PpOcrSpotterModels, AFloorBoxTakesTheClassOfTheTextsPlacedNearIt) {

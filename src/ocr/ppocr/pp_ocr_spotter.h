@@ -5,6 +5,7 @@
 // With SpotRequest::regions, only those regions are processed (map-guided spotting).
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "ocr/ground_view.h"
 #include "ocr/lexicon.h"
 #include "ocr/onnx_model.h"
+#include "ocr/placed_size.h"
 #include "ocr/placed_windows.h"
 #include "ocr/ppocr/pp_ocr_networks.h"
 #include "ocr/raw_band.h"
@@ -181,6 +183,10 @@ struct PpOcrOptions {
   // with the lexicon 80.5 -> 85.0 % of the detected, 159 cut numbers matched by their part,
   // none to a wrong text (docs/OCR.md, session 14).
   int min_cut_part_chars = 2;
+  // ... and a floor box read as a text placed near it is held to that text's size on the floor
+  // (ocr/placed_size.h): tightened when DB's margin left it too tall or long, refused as that
+  // text when far too short. Empty: never.
+  std::optional<PlacedSizeOptions> placed_size = PlacedSizeOptions{};
   // ... and a floor box read against the texts placed near it, one way round, that no reading
   // matched is read again from crops grown by each of these factors (along, across the text),
   // its matches counting as the first reading's. Empty: none. Test split, session 17: parking

@@ -37,6 +37,9 @@ from onnx_graph import OnnxGraph  # noqa: E402
 FEATURES = "p2o.Concat.8"  # [N, 960, 1, T]: the neck's output, input of the head
 # The backbone's last stage starts here, [N, 240, 12, W / 4]; its first weight follows.
 LAST_STAGE_CUT, LAST_STAGE_FIRST_WEIGHT = "p2o.Add.159", "conv2d_177.w_0"
+# The backbone's output, [N, 480, 1, T], where the SVTR neck starts (its convolutions,
+# transformer blocks and shortcut concatenation); its first weight follows.
+NECK_CUT, NECK_FIRST_WEIGHT = "p2o.AveragePool.1", "conv2d_142.w_0"
 HEAD_TENSORS = ["conv2d_145.w_0", "batch_norm2d_151.w_0", "batch_norm2d_151.b_0",
                 "conv2d_146.w_0", "batch_norm2d_152.w_0", "batch_norm2d_152.b_0"]
 CLASSIFIER = ["linear_85.w_0", "linear_85.b_0"]  # MatMul weight (120, C) and bias (C,)
@@ -300,10 +303,12 @@ def main():
     ap.add_argument("--alphabet", default="0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ-")
     ap.add_argument("--features", default=FEATURES,
                     help="graph output computed once per crop, where learning starts; "
-                         f"{LAST_STAGE_CUT} is the input of the backbone's last stage")
+                         f"{NECK_CUT} is the backbone's output, {LAST_STAGE_CUT} the input "
+                         "of its last stage")
     ap.add_argument("--learn-from", default="",
                     help="first weight that learns, every later one learning too (default: "
-                         f"the head only); {LAST_STAGE_FIRST_WEIGHT} follows {LAST_STAGE_CUT}")
+                         f"the head only); {NECK_FIRST_WEIGHT} follows {NECK_CUT}, "
+                         f"{LAST_STAGE_FIRST_WEIGHT} {LAST_STAGE_CUT}")
     ap.add_argument("--epochs", type=int, default=8)
     ap.add_argument("--lr", type=float, default=5e-4)
     ap.add_argument("--batch", type=int, default=32)

@@ -81,6 +81,7 @@ write_model "$paddleocr"/ch_PP-OCRv4_det_infer.onnx models/floor_detector_tuning
 # The horizon-band detector: neck and head tuned on raw bands (opt-in, --band-detector tuned).
 write_model "$paddleocr"/ch_PP-OCRv4_det_infer.onnx models/band_detector_tuning.npz \
   third_party/models/parkloc_band_det.onnx
-# The recognizer: its head tuned on rectified text crops (tools/recognizer_tuning/train.py).
+# The recognizer of second opinions: its SVTR neck and head tuned on rectified text crops
+# (tools/recognizer_tuning/train.py; session 20).
 write_model "$paddleocr"/ch_PP-OCRv4_rec_infer.onnx models/recognizer_tuning.npz \
   third_party/models/parkloc_rec.onnx

@@ -34,18 +34,25 @@ std::vector<std::string> textsNear(const std::vector<PlacedText>& placed,
   return texts;
 }
 
-std::optional<Eigen::Vector2d> readingDirectionNear(const std::vector<PlacedText>& placed,
-                                                    const Eigen::Vector2d& vehicle_xy,
-                                                    double radius, double max_angle) {
+const PlacedText* nearestPlaced(const std::vector<PlacedText>& placed,
+                                const Eigen::Vector2d& vehicle_xy, double radius,
+                                std::string_view text) {
   const PlacedText* nearest = nullptr;
   double nearest_distance = radius;
   for (const PlacedText& p : placed) {
     const double d = (p.vehicle_xy - vehicle_xy).norm();
-    if (d <= nearest_distance) {
+    if ((text.empty() || p.text == text) && d <= nearest_distance) {
       nearest = &p;
       nearest_distance = d;
     }
   }
+  return nearest;
+}
+
+std::optional<Eigen::Vector2d> readingDirectionNear(const std::vector<PlacedText>& placed,
+                                                    const Eigen::Vector2d& vehicle_xy,
+                                                    double radius, double max_angle) {
+  const PlacedText* nearest = nearestPlaced(placed, vehicle_xy, radius);
   if (nearest == nullptr) return std::nullopt;
   const double min_cos = std::cos(max_angle);
   for (const PlacedText& p : placed)

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "geometry/pose.h"
@@ -38,6 +39,12 @@ std::vector<PlacedText> placeFloorTexts(const HdMap& map, const geometry::Pose2&
 // The texts placed within `radius` metres of `vehicle_xy`, each once, nearest first.
 std::vector<std::string> textsNear(const std::vector<PlacedText>& placed,
                                    const Eigen::Vector2d& vehicle_xy, double radius);
+
+// The text placed nearest `vehicle_xy` within `radius` metres, of those that read `text`
+// (empty: of all); null when there is none.
+const PlacedText* nearestPlaced(const std::vector<PlacedText>& placed,
+                                const Eigen::Vector2d& vehicle_xy, double radius,
+                                std::string_view text = {});
 
 // The way the texts placed within `radius` metres of `vehicle_xy` read, when there are some and
 // they all read within `max_angle` radians of the nearest one (its direction); empty otherwise.

@@ -97,14 +97,9 @@ std::vector<ViewText> viewTexts(const GroundView& view, const cv::Size& raw_size
   std::vector<ViewText> out;
   for (const auto& inst : labels.instances) {
     ViewText t;
-    const Quad raw = io::pointQuad(inst.polygon);
-    bool mapped = true;
-    for (int k = 0; k < 4 && mapped; ++k) {
-      const auto v = view.viewFromRaw(raw[k]);
-      if (v) t.corners[k] = *v;
-      mapped = v.has_value();
-    }
-    if (!mapped) continue;
+    const std::optional<Quad> corners = view.viewFromRaw(io::pointQuad(inst.polygon));
+    if (!corners) continue;
+    t.corners = *corners;
     const bool all_inside = whollyInside(t.corners, view.size());
     // Licence plates are not in the map; like pillar text they stand upright.
     const map::Landmark* landmark = map.findById(inst.landmark_id);

@@ -128,4 +128,24 @@ std::optional<cv::Point2f> GroundView::viewFromRaw(const cv::Point2f& raw_pixel)
   return viewFromGround(floor->head<2>());
 }
 
+std::optional<Quad> GroundView::rawFromView(const Quad& view_quad) const {
+  Quad out;
+  for (size_t k = 0; k < out.size(); ++k) {
+    const auto p = rawFromView(view_quad[k]);
+    if (!p) return std::nullopt;
+    out[k] = *p;
+  }
+  return out;
+}
+
+std::optional<Quad> GroundView::viewFromRaw(const Quad& raw_quad) const {
+  Quad out;
+  for (size_t k = 0; k < out.size(); ++k) {
+    const auto p = viewFromRaw(raw_quad[k]);
+    if (!p) return std::nullopt;
+    out[k] = *p;
+  }
+  return out;
+}
+
 }  // namespace parkloc::ocr

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "geometry/rig.h"
+#include "ocr/quad.h"
 
 namespace parkloc::ocr {
 
@@ -48,6 +49,9 @@ class GroundView {
   // not meet the floor in front of the camera (above the horizon) or cannot be unprojected.
   // Exact for points on the floor only: anything above it lands farther out in the view.
   std::optional<cv::Point2f> viewFromRaw(const cv::Point2f& raw_pixel) const;
+  // The same for each corner of a quad; empty when one of them does not map.
+  std::optional<Quad> rawFromView(const Quad& view_quad) const;
+  std::optional<Quad> viewFromRaw(const Quad& raw_quad) const;
   // View pixel <-> ground point (x, y) in the vehicle frame; affine, inverse of each other.
   Eigen::Vector2d groundFromView(const cv::Point2f& view_pixel) const;
   cv::Point2f viewFromGround(const Eigen::Vector2d& vehicle_xy) const;

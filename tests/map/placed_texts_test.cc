@@ -66,6 +66,16 @@ TEST(TextsNear, KeepsThoseWithinTheRadiusOnceEachNearestFirst) {
   EXPECT_TRUE(textsNear({}, {0.0, 0.0}, 1.0).empty());
 }
 
+TEST(NearestPlaced, IsTheNearestWithinTheRadiusOfThoseThatReadTheText) {
+  const std::vector<PlacedText> placed = {
+      {"C001", {0.8, 0.0}}, {"C002", {0.3, 0.0}}, {"C001", {0.5, 0.0}}, {"C003", {3.0, 0.0}}};
+  ASSERT_NE(nearestPlaced(placed, {0.0, 0.0}, 1.0), nullptr);
+  EXPECT_EQ(nearestPlaced(placed, {0.0, 0.0}, 1.0), &placed[1]);          // any text
+  EXPECT_EQ(nearestPlaced(placed, {0.0, 0.0}, 1.0, "C001"), &placed[2]);  // the nearer C001
+  EXPECT_EQ(nearestPlaced(placed, {0.0, 0.0}, 1.0, "C003"), nullptr);     // too far
+  EXPECT_EQ(nearestPlaced(placed, {0.0, 0.0}, 1.0, "C009"), nullptr);     // not placed
+}
+
 TEST(ReadingDirectionNear, IsTheWayTheTextsPlacedThereReadWhenTheyAgree) {
   const Eigen::Vector2d east(1.0, 0.0), west(-1.0, 0.0), north_east(1.0, 1.0);
   const std::vector<PlacedText> placed = {{"C001", {0.0, 0.0}, east},

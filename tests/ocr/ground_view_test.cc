@@ -92,6 +92,38 @@ TEST(GroundView, RawPixelsAboveTheHorizonHaveNoViewPixel) {
   }
 }
 
+TEST(GroundView, AQuadMapsCornerByCornerOrNotAtAll) {
+  const geometry::Rig rig = geometry::defaultRig();
+  const geometry::RigCamera& camera = rig.cameras.front();
+  const GroundView view(camera);
+  const Quad in_view = {
+      cv::Point2f(100.5f, 80.5f), {160.5f, 82.5f}, {158.5f, 110.5f}, {99.5f, 108.5f}};
+  const auto raw = view.rawFromView(in_view);
+  ASSERT_TRUE(raw);
+  for (size_t k = 0; k < 4; ++k) {
+    const auto corner = view.rawFromView(in_view[k]);
+    ASSERT_TRUE(corner);
+    EXPECT_EQ((*raw)[k], *corner);
+  }
+  const auto back = view.viewFromRaw(*raw);
+  ASSERT_TRUE(back);
+  for (size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR((*back)[k].x, in_view[k].x, 0.05);
+    EXPECT_NEAR((*back)[k].y, in_view[k].y, 0.05);
+  }
+  // One corner above the horizon (the raw pixel of a point 10 m out, 0.5 m above the lens):
+  // no quad.
+  Eigen::Vector3d heading = camera.vehicle_from_camera.linear().col(2);
+  heading.z() = 0.0;
+  const Eigen::Vector3d above = camera.vehicle_from_camera.translation() +
+                                10.0 * heading.normalized() + Eigen::Vector3d(0, 0, 0.5);
+  const auto px = camera.model.project(camera.vehicle_from_camera.inverse() * above);
+  ASSERT_TRUE(px);
+  Quad cut = *raw;
+  cut[2] = cv::Point2f(px->x(), px->y());
+  EXPECT_FALSE(view.viewFromRaw(cut));
+}
+
 TEST(GroundView, TheFloorBehindTheCarsBodyIsLeftOutAndTheViewCroppedToWhatShows) {
   for (const auto& camera : geometry::defaultRig().cameras) {
     ASSERT_TRUE(camera.body) << camera.name;

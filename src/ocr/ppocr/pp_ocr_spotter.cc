@@ -466,40 +466,20 @@ bool seenBefore(const TextInstance& inst, const std::vector<TextInstance>& found
   return false;
 }
 
-// The text placed nearest `ground` (vehicle frame) within `radius` that reads `text`; null when
-// none does.
-const map::PlacedText* placedAs(const std::vector<map::PlacedText>& placed, const std::string& text,
-                                const Eigen::Vector2d& ground, double radius) {
-  const map::PlacedText* nearest = nullptr;
-  double nearest_distance = radius;
-  for (const map::PlacedText& p : placed) {
-    const double d = (p.vehicle_xy - ground).norm();
-    if (p.text == text && d <= nearest_distance) {
-      nearest = &p;
-      nearest_distance = d;
-    }
-  }
-  return nearest;
-}
-
 // Holds a floor box read as a text placed near it to that text's size (PpOcrOptions::
 // placed_size), in `view`'s pixels, which keep the floor's proportions. A box refused as that
 // text loses its reading; false when it is then not confident enough to be reported unread.
 bool holdToPlacedSize(TextInstance& inst, const GroundView& view, const SpotRequest& request,
                       const PlacedSizeOptions& size, float confident_box_score) {
-  Quad in_view;
-  for (size_t k = 0; k < 4; ++k) {
-    const auto v = view.viewFromRaw(inst.polygon[k]);
-    if (!v) return true;  // a corner off the floor: no size to compare
-    in_view[k] = *v;
-  }
+  const std::optional<Quad> in_view = view.viewFromRaw(inst.polygon);
+  if (!in_view) return true;  // a corner off the floor: no size to compare
   const map::PlacedText* placed =
-      placedAs(request.placed_floor_texts, inst.text, view.groundFromView(quadCentre(in_view)),
-               request.placement_radius_m);
+      map::nearestPlaced(request.placed_floor_texts, view.groundFromView(quadCentre(*in_view)),
+                         request.placement_radius_m, inst.text);
   if (placed == nullptr) return true;
   const double resolution = view.options().resolution;
   const PlacedSizeFit fit =
-      fitToPlacedSize(in_view, static_cast<float>(placed->width / resolution),
+      fitToPlacedSize(*in_view, static_cast<float>(placed->width / resolution),
                       static_cast<float>(placed->height / resolution), !inst.partial, size);
   if (fit.verdict == PlacedSize::kRefused) {
     inst.text.clear();
@@ -508,14 +488,10 @@ bool holdToPlacedSize(TextInstance& inst, const GroundView& view, const SpotRequ
     return inst.detection_score >= confident_box_score;
   }
   if (fit.verdict == PlacedSize::kTightened) {
-    Quad in_raw;
-    for (size_t k = 0; k < 4; ++k) {
-      const auto r = view.rawFromView(fit.quad[k]);
-      if (!r) return true;
-      in_raw[k] = *r;
+    if (const auto in_raw = view.rawFromView(fit.quad)) {
+      inst.polygon = *in_raw;
+      inst.sized_by_map = true;
     }
-    inst.polygon = in_raw;
-    inst.sized_by_map = true;
   }
   return true;
 }
@@ -548,15 +524,11 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
                                window.view->groundFromView(quadCentre(inst.polygon) + *shift),
                                request.placement_radius_m, options_.unplaced_class_weight)
                          : kFloorClasses;
-      bool inside = true;
-      for (auto& p : inst.polygon) {
-        const auto raw = window.view->rawFromView(p + *shift);
-        if (!raw)
-          inside = false;
-        else
-          p = *raw;
-      }
-      if (!inside) continue;
+      Quad in_view = inst.polygon;
+      for (auto& p : in_view) p += *shift;
+      const std::optional<Quad> in_raw = window.view->rawFromView(in_view);
+      if (!in_raw) continue;
+      inst.polygon = *in_raw;
       if (skip_seen && seenBefore(inst, out, found_before)) continue;
       // Final corner fit at the raw image's resolution, on the ground plane.
       inst.polygon = refinedCorners(image, inst.polygon, options_, request.camera);

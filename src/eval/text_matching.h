@@ -45,7 +45,8 @@ ImageMatching matchDetections(const std::vector<Quad>& truths, const std::vector
 
 // The same, where truth i may also be boxed by `alternatives[i]` when that is set (empty: none
 // has one): its IoU with a detection is the larger of the two. A text partly hidden or cut is
-// annotated by the part that shows, and a detector may box that part or the whole text.
+// annotated by the part that shows, and a detector may box that part or the whole text; a box
+// on either of a don't-care truth is ignored.
 ImageMatching matchDetections(const std::vector<Quad>& truths,
                               const std::vector<std::optional<Quad>>& alternatives,
                               const std::vector<bool>& dont_care,

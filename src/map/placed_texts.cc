@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace parkloc::map {
@@ -47,6 +48,24 @@ const PlacedText* nearestPlaced(const std::vector<PlacedText>& placed,
     }
   }
   return nearest;
+}
+
+const PlacedText* placedTextUnder(const std::vector<PlacedText>& placed,
+                                  const Eigen::Vector2d& vehicle_xy, double margin) {
+  const PlacedText* under = nullptr;
+  double under_distance = std::numeric_limits<double>::infinity();
+  for (const PlacedText& p : placed) {
+    if (p.width <= 0.0 || p.height <= 0.0) continue;
+    const Eigen::Vector2d along = p.reading.normalized();
+    const Eigen::Vector2d offset = vehicle_xy - p.vehicle_xy;
+    const double x = offset.dot(along), y = offset.dot(Eigen::Vector2d(-along.y(), along.x()));
+    if (std::abs(x) > 0.5 * p.width + margin || std::abs(y) > 0.5 * p.height + margin) continue;
+    if (offset.norm() < under_distance) {
+      under = &p;
+      under_distance = offset.norm();
+    }
+  }
+  return under;
 }
 
 std::optional<Eigen::Vector2d> readingDirectionNear(const std::vector<PlacedText>& placed,

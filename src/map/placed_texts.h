@@ -46,6 +46,12 @@ const PlacedText* nearestPlaced(const std::vector<PlacedText>& placed,
                                 const Eigen::Vector2d& vehicle_xy, double radius,
                                 std::string_view text = {});
 
+// The text placed with `vehicle_xy` on its footprint on the floor (its width by its height,
+// grown by `margin` metres on every side), the one whose centre is nearest when several are;
+// null when there is none or no footprint is known.
+const PlacedText* placedTextUnder(const std::vector<PlacedText>& placed,
+                                  const Eigen::Vector2d& vehicle_xy, double margin);
+
 // The way the texts placed within `radius` metres of `vehicle_xy` read, when there are some and
 // they all read within `max_angle` radians of the nearest one (its direction); empty otherwise.
 // A box found there can then be read that way round only: the two bays facing each other across

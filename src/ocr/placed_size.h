@@ -18,6 +18,11 @@ struct PlacedSizeOptions {
   // (length) about its centre line: only ever tightened, never grown.
   float max_height_ratio = 1.3f;
   float max_length_ratio = 1.2f;
+  // A box that matched no text is held to the size of the text whose footprint on the floor,
+  // grown by this margin (metres), holds its centre (fitUnmatchedToPlacedSize). Negative: never.
+  double unmatched_margin_m = 0.1;
+  // ... when its reading axis lies within this angle (radians) of the way that text reads.
+  float unmatched_max_angle = 0.5236f;  // 30 degrees
 };
 
 enum class PlacedSize { kKept, kTightened, kRefused };
@@ -32,5 +37,13 @@ struct PlacedSizeFit {
 // `whole` false (a match by the part a cut leaves) only the height is checked.
 PlacedSizeFit fitToPlacedSize(const Quad& quad, float width, float height, bool whole,
                               const PlacedSizeOptions& options = {});
+
+// A box that matched no text but lies on one and along it (its reading axis within
+// options.unmatched_max_angle of `reading`, either way round) is that text's box, or a fragment
+// of it: tightened like a whole match, or refused when under min_length_share of the text's
+// length (a fragment is no box of the text). Across the text it is kept as it is.
+PlacedSizeFit fitUnmatchedToPlacedSize(const Quad& quad, float width, float height,
+                                       const cv::Point2f& reading,
+                                       const PlacedSizeOptions& options = {});
 
 }  // namespace parkloc::ocr

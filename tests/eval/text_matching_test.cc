@@ -88,6 +88,22 @@ TEST(TextMatching, DontCareTruthIsNeitherMissedNorAFalsePositive) {
   EXPECT_EQ(m.ignored_detections, std::vector<size_t>({1}));
 }
 
+TEST(TextMatching, ABoxOnTheWholeOfAMostlyHiddenTextIsIgnored) {
+  // A car hides the top 70 % of a 100 x 20 px number (don't care): its visible strip is y 14..20.
+  // A box of the whole text covers the strip by 30 % of its own area (IoU 0.3), yet boxes the
+  // whole text: ignored, as a box of the strip would be.
+  const std::vector<Quad> shown = {box(0, 14, 100, 20)};
+  const std::vector<std::optional<Quad>> whole = {box(0, 0, 100, 20)};
+  const std::vector<Quad> of_the_whole = {box(0, 0, 100, 20)};
+  EXPECT_EQ(matchDetections(shown, {true}, of_the_whole).false_detections.size(), 1u);
+  const ImageMatching m = matchDetections(shown, whole, {true}, of_the_whole);
+  EXPECT_TRUE(m.false_detections.empty());
+  EXPECT_EQ(m.ignored_detections, std::vector<size_t>({0}));
+  // A box beside the text is no box of it.
+  EXPECT_EQ(matchDetections(shown, whole, {true}, {box(0, 40, 100, 60)}).false_detections.size(),
+            1u);
+}
+
 TEST(TextMatching, UndetectedDontCareIsNotMissed) {
   const ImageMatching m = matchDetections({box(0, 0, 10, 10)}, {true}, {});
   EXPECT_TRUE(m.missed_truths.empty());

@@ -76,6 +76,23 @@ TEST(NearestPlaced, IsTheNearestWithinTheRadiusOfThoseThatReadTheText) {
   EXPECT_EQ(nearestPlaced(placed, {0.0, 0.0}, 1.0, "C009"), nullptr);     // not placed
 }
 
+TEST(PlacedTextUnder, IsTheTextWhoseFootprintHoldsThePoint) {
+  // C001 reads east, 1.0 x 0.4 m, at the origin; C002 reads north, 1.0 x 0.4 m, at (2, 0);
+  // C003's size is not known.
+  const Eigen::Vector2d east(1.0, 0.0), north(0.0, 1.0);
+  const std::vector<PlacedText> placed = {
+      {"C001", {0.0, 0.0}, east, TextClass::kParkingNumber, 1.0, 0.4},
+      {"C002", {2.0, 0.0}, north, TextClass::kParkingNumber, 1.0, 0.4},
+      {"C003", {0.0, 5.0}, east}};
+  EXPECT_EQ(placedTextUnder(placed, {0.45, 0.15}, 0.0), &placed[0]);  // inside, near a corner
+  EXPECT_EQ(placedTextUnder(placed, {0.0, 0.3}, 0.0), nullptr);       // beyond its height
+  EXPECT_EQ(placedTextUnder(placed, {0.0, 0.3}, 0.15), &placed[0]);   // ... within the margin
+  // C002 reads north: its length lies along y, its height along x.
+  EXPECT_EQ(placedTextUnder(placed, {2.0, 0.45}, 0.0), &placed[1]);
+  EXPECT_EQ(placedTextUnder(placed, {2.45, 0.0}, 0.0), nullptr);
+  EXPECT_EQ(placedTextUnder(placed, {0.0, 5.0}, 1.0), nullptr);  // no footprint known
+}
+
 TEST(ReadingDirectionNear, IsTheWayTheTextsPlacedThereReadWhenTheyAgree) {
   const Eigen::Vector2d east(1.0, 0.0), west(-1.0, 0.0), north_east(1.0, 1.0);
   const std::vector<PlacedText> placed = {{"C001", {0.0, 0.0}, east},

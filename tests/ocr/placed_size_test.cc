@@ -73,5 +73,36 @@ TEST(PlacedSize, AnUnknownSizeChecksNothing) {
   EXPECT_EQ(fitToPlacedSize(box(0, 0, 10, 60), 0, 0, true).verdict, PlacedSize::kKept);
 }
 
+TEST(PlacedSize, ABoxThatMatchedNothingAlongTheTextItLiesOnIsHeldToItsSize) {
+  const cv::Point2f along_x(1, 0);
+  // Twice too tall and 1.5 times too long: tightened about its centre, like a whole match.
+  const PlacedSizeFit big = fitUnmatchedToPlacedSize(box(50, 20, 150, 60), 100, 30, along_x);
+  EXPECT_EQ(big.verdict, PlacedSize::kTightened);
+  EXPECT_NEAR(quadWidth(big.quad), 100, 1e-3);
+  EXPECT_NEAR(quadHeight(big.quad), 30, 1e-3);
+  EXPECT_NEAR(quadCentre(big.quad).x, 50, 1e-3);
+  // Under half the text's length: a fragment of it, refused.
+  EXPECT_EQ(fitUnmatchedToPlacedSize(box(0, 0, 40, 30), 100, 30, along_x).verdict,
+            PlacedSize::kRefused);
+  // Read either way round, the same.
+  EXPECT_EQ(fitUnmatchedToPlacedSize(box(0, 0, 40, 30), 100, 30, -along_x).verdict,
+            PlacedSize::kRefused);
+  // Its size is the text's: kept.
+  EXPECT_EQ(fitUnmatchedToPlacedSize(box(0, 0, 100, 30), 100, 30, along_x).verdict,
+            PlacedSize::kKept);
+}
+
+TEST(PlacedSize, ABoxThatMatchedNothingAcrossTheTextIsKeptAsItIs) {
+  // The box reads 45 degrees off the text (over 30): not the text's box, whatever its size.
+  const cv::Point2f diagonal(1, 1);
+  const PlacedSizeFit fit = fitUnmatchedToPlacedSize(box(0, 0, 40, 90), 100, 30, diagonal);
+  EXPECT_EQ(fit.verdict, PlacedSize::kKept);
+  EXPECT_EQ(fit.quad, box(0, 0, 40, 90));
+  // Within 30 degrees it is held: a 25 degree tilt.
+  const cv::Point2f tilted(std::cos(0.436f), std::sin(0.436f));
+  EXPECT_EQ(fitUnmatchedToPlacedSize(box(0, 0, 40, 30), 100, 30, tilted).verdict,
+            PlacedSize::kRefused);
+}
+
 }  // namespace
 }  // namespace parkloc::ocr

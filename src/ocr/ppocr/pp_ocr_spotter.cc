@@ -466,22 +466,36 @@ bool seenBefore(const TextInstance& inst, const std::vector<TextInstance>& found
   return false;
 }
 
-// Holds a floor box read as a text placed near it to that text's size (PpOcrOptions::
-// placed_size), in `view`'s pixels, which keep the floor's proportions. A box refused as that
-// text loses its reading; false when it is then not confident enough to be reported unread.
+// Holds a floor box read as a text placed near it, or lying on one, to that text's size
+// (PpOcrOptions::placed_size), in `view`'s pixels, which keep the floor's proportions. A box
+// refused as that text loses its reading; false when it is then not confident enough to be
+// reported unread, or read nothing and is a fragment of the text it lies on.
 bool holdToPlacedSize(TextInstance& inst, const GroundView& view, const SpotRequest& request,
                       const PlacedSizeOptions& size, float confident_box_score) {
   const std::optional<Quad> in_view = view.viewFromRaw(inst.polygon);
   if (!in_view) return true;  // a corner off the floor: no size to compare
+  const Eigen::Vector2d centre = view.groundFromView(quadCentre(*in_view));
+  // A box read as a text is held to the nearest text of that name, one nothing matched to the
+  // text it lies on.
   const map::PlacedText* placed =
-      map::nearestPlaced(request.placed_floor_texts, view.groundFromView(quadCentre(*in_view)),
-                         request.placement_radius_m, inst.text);
+      inst.lexicon_match ? map::nearestPlaced(request.placed_floor_texts, centre,
+                                              request.placement_radius_m, inst.text)
+      : size.unmatched_margin_m >= 0.0
+          ? map::placedTextUnder(request.placed_floor_texts, centre, size.unmatched_margin_m)
+          : nullptr;
   if (placed == nullptr) return true;
   const double resolution = view.options().resolution;
+  const float width = static_cast<float>(placed->width / resolution),
+              height = static_cast<float>(placed->height / resolution);
   const PlacedSizeFit fit =
-      fitToPlacedSize(*in_view, static_cast<float>(placed->width / resolution),
-                      static_cast<float>(placed->height / resolution), !inst.partial, size);
+      inst.lexicon_match
+          ? fitToPlacedSize(*in_view, width, height, !inst.partial, size)
+          : fitUnmatchedToPlacedSize(*in_view, width, height,
+                                     view.viewFromGround(centre + placed->reading.normalized()) -
+                                         view.viewFromGround(centre),
+                                     size);
   if (fit.verdict == PlacedSize::kRefused) {
+    if (!inst.lexicon_match) return false;  // a fragment of the text it lies on
     inst.text.clear();
     inst.lexicon_match = inst.second_opinion = inst.partial = false;
     inst.recognition_score = 0.f;
@@ -532,7 +546,7 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
       if (skip_seen && seenBefore(inst, out, found_before)) continue;
       // Final corner fit at the raw image's resolution, on the ground plane.
       inst.polygon = refinedCorners(image, inst.polygon, options_, request.camera);
-      if (placed_classes && inst.lexicon_match && options_.placed_size &&
+      if (placed_classes && options_.placed_size &&
           !holdToPlacedSize(inst, *window.view, request, *options_.placed_size,
                             options_.confident_box_score))
         continue;

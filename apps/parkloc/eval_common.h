@@ -53,6 +53,8 @@ struct SpotterArgs {
   float min_text_confidence = ocr::PpOcrOptions{}.min_text_confidence;
   float unplaced_class_weight = ocr::PpOcrOptions{}.unplaced_class_weight;
   double placed_open_world_weight = ocr::PpOcrOptions{}.placed_lexicon.open_world_weight;
+  double on_text_open_world_weight = ocr::PpOcrOptions{}.on_placed_text_lexicon.open_world_weight;
+  double on_text_margin = ocr::PpOcrOptions{}.on_placed_text_margin_m;
   bool reread_unmatched = !ocr::PpOcrOptions{}.reread_margins.empty();
   bool placed_size = ocr::PpOcrOptions{}.placed_size.has_value();
   bool reread_by_both_recognizers = !ocr::PpOcrOptions{}.reread_by_fallback_only;
@@ -127,6 +129,14 @@ struct SpotterArgs {
                     "against the texts the map places near a floor box")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
+    cmd->add_option("--on-text-open-world-weight", on_text_open_world_weight,
+                    "... for a floor box that lies on a text placed there")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
+    cmd->add_option("--on-text-margin", on_text_margin,
+                    "Metres around a placed text's footprint within which a box lies on it "
+                    "(negative: no box does)")
+        ->capture_default_str();
     cmd->add_flag("--reread-unmatched,!--no-reread-unmatched", reread_unmatched,
                   "Under a predicted pose, read a floor box that matched no placed text again "
                   "with a larger margin, by the fallback recognizer (default: on)");
@@ -193,6 +203,8 @@ inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   options.min_text_confidence = args.min_text_confidence;
   options.unplaced_class_weight = args.unplaced_class_weight;
   options.placed_lexicon.open_world_weight = args.placed_open_world_weight;
+  options.on_placed_text_lexicon.open_world_weight = args.on_text_open_world_weight;
+  options.on_placed_text_margin_m = args.on_text_margin;
   if (!args.reread_unmatched) options.reread_margins.clear();
   if (!args.placed_size) options.placed_size.reset();
   options.reread_by_fallback_only = !args.reread_by_both_recognizers;

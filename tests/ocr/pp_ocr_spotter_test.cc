@@ -291,6 +291,39 @@ TEST_F(PpOcrSpotterTest, AFloorBoxReadAsAPlacedTextIsHeldToItsSize) {
   EXPECT_TRUE(found[0].lexicon_match);  // the same box, unchecked
 }
 
+// A floor box whose centre lies on a text placed there decodes under the lexicon options for
+// such boxes; one beside the placed text, or with no margin to lie in, under the placed ones.
+TEST_F(PpOcrSpotterTest, AFloorBoxOnAPlacedTextDecodesUnderItsOwnLexiconOptions) {
+  SpotRequest request = leftFloorRequest({"B2-117"});
+  const auto scene =
+      testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
+  const Eigen::Vector2d reading(-1.0, 0.0);
+  auto placedAt = [&](const Eigen::Vector2d& xy) {
+    return std::vector<map::PlacedText>{
+        {"B2-117", xy, reading, map::TextClass::kParkingNumber, 1.2, 0.45}};
+  };
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.on_placed_text_lexicon.min_posterior = 2.0;  // no reading could pass
+  PpOcrSpotter spotter(options);
+
+  request.placed_floor_texts = placedAt({2.0, 2.6});  // under the box
+  for (const TextInstance& inst : spotter.spot(scene.image, request))
+    EXPECT_FALSE(inst.lexicon_match);
+  // 0.5 m across its reading direction: near the box (placement radius 1 m), not under it.
+  request.placed_floor_texts = placedAt({2.0, 3.1});
+  auto found = spotter.spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_EQ(found[0].text, "B2-117");
+
+  options.on_placed_text_margin_m = -1.0;  // no box lies on a text
+  request.placed_floor_texts = placedAt({2.0, 2.6});
+  found = PpOcrSpotter(options).spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].lexicon_match);
+}
+
 // Under a predicted pose the map's classes weigh in: the same floor number is a parking
 // number where the map paints one, and other floor text where the map paints its "STOP".
 TEST(PpOcrSpotterModels, AFloorBoxTakesTheClassOfTheTextsPlacedNearIt) {

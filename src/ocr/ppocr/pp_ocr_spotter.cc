@@ -73,6 +73,8 @@ struct ReadJob {
   const CutCandidates* cut = nullptr;
   // `lexicon` holds the texts placed near the box (SpotRequest::narrow_to_placed_texts).
   bool placed = false;
+  // ... and the box lies on one of them.
+  bool on_placed_text = false;
   // The texts whose characters a free reading may use: `lexicon`, or the whole floor
   // lexicon when `lexicon` is the part of it placed near the box. Null: `lexicon`.
   const std::vector<std::string>* reading_lexicon = nullptr;
@@ -216,7 +218,9 @@ std::vector<std::optional<TextInstance>> readJobs(
           jobs[job].reading_lexicon ? jobs[job].reading_lexicon : jobs[job].lexicon;
       LexiconDecoding d =
           decodeWithLexicon(outputs[k].matrix(), charset, lexicon,
-                            jobs[job].placed ? options.placed_lexicon : options.lexicon,
+                            jobs[job].on_placed_text ? options.on_placed_text_lexicon
+                            : jobs[job].placed       ? options.placed_lexicon
+                                                     : options.lexicon,
                             readingClasses(reading_lexicon));
       if (second_opinion && !d.matched) continue;
       // Both directions share the crop's step count, so their log probabilities compare;
@@ -408,6 +412,9 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
         job.reading_lexicon = job.lexicon;
         job.lexicon = &placed_lexicons.back();
         job.placed = true;
+        job.on_placed_text = options_.on_placed_text_margin_m >= 0.0 &&
+                             map::placedTextUnder(request.placed_floor_texts, ground,
+                                                  options_.on_placed_text_margin_m) != nullptr;
       }
       // The texts placed there say which way round the box reads.
       const auto reading = map::readingDirectionNear(request.placed_floor_texts, ground, radius,

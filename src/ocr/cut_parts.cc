@@ -4,6 +4,7 @@
 #include <map>
 
 #include "ocr/ctc.h"
+#include "ocr/lexicon.h"
 
 namespace parkloc::ocr {
 
@@ -45,6 +46,19 @@ CutCandidates withCutParts(const std::vector<std::string>& wholes, bool cut_at_s
     out.whole.push_back(o.front());
   }
   return out;
+}
+
+std::optional<std::string> wholeOfPart(const std::string& reading,
+                                       const CutCandidates& candidates) {
+  std::optional<std::string> whole;
+  for (size_t i = 0; i < candidates.texts.size(); ++i) {
+    const std::string& text = candidates.texts[i];
+    if (text != reading && !sameUpToLookAlikes(text, reading)) continue;
+    if (text == candidates.whole[i]) return std::nullopt;  // a whole text, no part
+    if (whole && *whole != candidates.whole[i]) return std::nullopt;
+    whole = candidates.whole[i];
+  }
+  return whole;
 }
 
 }  // namespace parkloc::ocr

@@ -4,6 +4,7 @@
 // one or two there) and the box may run out of the image, the parts a cut can leave of those
 // texts are candidates too, each standing for its whole text. Parts that two texts share, or
 // that are another text whole, stand for nothing and are left out.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,5 +25,10 @@ struct CutCandidates {
 // or equal to a whole, is left out.
 CutCandidates withCutParts(const std::vector<std::string>& wholes, bool cut_at_start,
                            bool cut_at_end, size_t min_chars);
+
+// The whole text of the part of `candidates` that `reading` is, exactly or up to glyphs that
+// look alike (sameUpToLookAlikes); empty when it is a whole text itself, no part, or parts of
+// two texts.
+std::optional<std::string> wholeOfPart(const std::string& reading, const CutCandidates& candidates);
 
 }  // namespace parkloc::ocr

@@ -32,5 +32,18 @@ TEST(WithCutParts, AddsTheUnambiguousPartsOfAtLeastHalfEachStandingForItsWhole) 
   EXPECT_EQ(none.texts, (Texts{"C008"}));
 }
 
+TEST(WholeOfPart, IsTheTextAReadingIsOneEndOfGlyphForGlyph) {
+  const CutCandidates parts = withCutParts({"D008", "D009", "C008"}, true, true, 2);
+  EXPECT_EQ(wholeOfPart("09", parts), std::optional<std::string>("D009"));
+  EXPECT_EQ(wholeOfPart("009", parts), std::optional<std::string>("D009"));
+  EXPECT_EQ(wholeOfPart("C0", parts), std::optional<std::string>("C008"));
+  EXPECT_EQ(wholeOfPart("CO", parts), std::optional<std::string>("C008"));  // O looks like 0
+  EXPECT_FALSE(wholeOfPart("08", parts));    // the end of D008 and of C008
+  EXPECT_FALSE(wholeOfPart("D0", parts));    // the start of two texts
+  EXPECT_FALSE(wholeOfPart("D009", parts));  // a whole text
+  EXPECT_FALSE(wholeOfPart("9", parts));     // under half of any text
+  EXPECT_FALSE(wholeOfPart("07", parts));    // no part
+}
+
 }  // namespace
 }  // namespace parkloc::ocr

@@ -324,6 +324,29 @@ TEST_F(PpOcrSpotterTest, AFloorBoxOnAPlacedTextDecodesUnderItsOwnLexiconOptions)
   EXPECT_TRUE(found[0].lexicon_match);
 }
 
+// A box on a placed text whose confident free reading is one end of that text is that text,
+// partly seen: the end of B2-117, where the map places B2-117.
+TEST_F(PpOcrSpotterTest, AFreeReadingOfOneEndOfThePlacedTextUnderTheBoxIsThatText) {
+  SpotRequest request = leftFloorRequest({"B2-117"});
+  const auto scene = testing::renderFloorText(*request.camera, "-117", {2.0, 2.6}, M_PI, 0.8, 0.45);
+  request.placed_floor_texts = {
+      {"B2-117", {2.0, 2.6}, {-1.0, 0.0}, map::TextClass::kParkingNumber, 1.2, 0.45}};
+  auto found = spotter_->spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].raw_text, "-117");
+  EXPECT_EQ(found[0].text, "B2-117");
+  EXPECT_TRUE(found[0].lexicon_match);
+  EXPECT_TRUE(found[0].partial);
+
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.on_placed_text_margin_m = -1.0;  // no box lies on a text
+  found = PpOcrSpotter(options).spot(scene.image, request);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].text, "-117");
+  EXPECT_FALSE(found[0].lexicon_match);
+}
+
 // Under a predicted pose the map's classes weigh in: the same floor number is a parking
 // number where the map paints one, and other floor text where the map paints its "STOP".
 TEST(PpOcrSpotterModels, AFloorBoxTakesTheClassOfTheTextsPlacedNearIt) {

@@ -73,8 +73,10 @@ struct ReadJob {
   const CutCandidates* cut = nullptr;
   // `lexicon` holds the texts placed near the box (SpotRequest::narrow_to_placed_texts).
   bool placed = false;
-  // ... and the box lies on one of them.
+  // ... and the box lies on one of them: `placed_near` is then the texts placed near it (their
+  // whole texts, where `lexicon` may hold parts of them too).
   bool on_placed_text = false;
+  const std::vector<std::string>* placed_near = nullptr;
   // The texts whose characters a free reading may use: `lexicon`, or the whole floor
   // lexicon when `lexicon` is the part of it placed near the box. Null: `lexicon`.
   const std::vector<std::string>* reading_lexicon = nullptr;
@@ -289,6 +291,16 @@ std::vector<std::optional<TextInstance>> readJobs(
       inst.text = jobs[i].cut->whole[d.best_index];
       inst.partial = jobs[i].cut->texts[d.best_index] != inst.text;
     }
+    // A confident free reading of a box on a placed text that is one end of that text, glyph
+    // for glyph, is that text partly seen.
+    if (!d.matched && read && jobs[i].placed_near != nullptr && options.min_cut_part_chars > 0) {
+      const CutCandidates parts = withCutParts(*jobs[i].placed_near, true, true,
+                                               static_cast<size_t>(options.min_cut_part_chars));
+      if (const auto whole = wholeOfPart(d.raw_text, parts)) {
+        inst.text = *whole;
+        inst.lexicon_match = inst.partial = true;
+      }
+    }
     inst.recognition_score = d.matched ? static_cast<float>(d.posterior) : d.raw_confidence;
     inst.detection_score = jobs[i].detection_score;
     out[i] = std::move(inst);
@@ -415,6 +427,7 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
         job.on_placed_text = options_.on_placed_text_margin_m >= 0.0 &&
                              map::placedTextUnder(request.placed_floor_texts, ground,
                                                   options_.on_placed_text_margin_m) != nullptr;
+        if (job.on_placed_text) job.placed_near = job.lexicon;
       }
       // The texts placed there say which way round the box reads.
       const auto reading = map::readingDirectionNear(request.placed_floor_texts, ground, radius,

@@ -71,16 +71,13 @@ ImageMatching matchDetections(const std::vector<Quad>& truth_quads,
     bool on_dont_care = false;
     for (size_t t = 0; t < truths.size() && !on_dont_care; ++t) {
       if (!dont_care[t]) continue;
+      auto covers = [&](const std::vector<cv::Point2f>& truth) {
+        const double overlap = intersectionArea(detection, truth);
+        return (own_area > 0.0 && overlap / own_area > options.dont_care_min_coverage) ||
+               polygonIoU(detection, truth) >= options.min_iou;
+      };
       // As for a cared-for truth, the box may cover the part that shows or the whole.
-      using Polygon = std::vector<cv::Point2f>;
-      const Polygon* boxes[] = {&truths[t], alternatives[t] ? &*alternatives[t] : nullptr};
-      for (const Polygon* box : boxes) {
-        if (box == nullptr) continue;
-        const double overlap = intersectionArea(detection, *box);
-        on_dont_care = on_dont_care ||
-                       (own_area > 0.0 && overlap / own_area > options.dont_care_min_coverage) ||
-                       polygonIoU(detection, *box) >= options.min_iou;
-      }
+      on_dont_care = covers(truths[t]) || (alternatives[t] && covers(*alternatives[t]));
     }
     (on_dont_care ? out.ignored_detections : out.false_detections).push_back(d);
   }

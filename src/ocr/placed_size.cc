@@ -1,7 +1,5 @@
 #include "ocr/placed_size.h"
 
-#include <cmath>
-
 namespace parkloc::ocr {
 namespace {
 
@@ -41,11 +39,7 @@ PlacedSizeFit fitToPlacedSize(const Quad& quad, float width, float height, bool 
 PlacedSizeFit fitUnmatchedToPlacedSize(const Quad& quad, float width, float height,
                                        const cv::Point2f& reading,
                                        const PlacedSizeOptions& options) {
-  const cv::Point2f axis = quad[1] - quad[0];
-  const double lengths = cv::norm(axis) * cv::norm(reading);
-  if (lengths <= 0.0 ||
-      std::abs(axis.dot(reading)) < std::cos(options.unmatched_max_angle) * lengths)
-    return {PlacedSize::kKept, quad};
+  if (!orientedAlong(quad, reading, options.unmatched_max_angle)) return {PlacedSize::kKept, quad};
   return fitToPlacedSize(quad, width, height, true, options);
 }
 

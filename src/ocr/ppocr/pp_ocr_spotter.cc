@@ -73,10 +73,10 @@ struct ReadJob {
   const CutCandidates* cut = nullptr;
   // `lexicon` holds the texts placed near the box (SpotRequest::narrow_to_placed_texts).
   bool placed = false;
-  // ... and the box lies on one of them: `placed_near` is then the texts placed near it (their
-  // whole texts, where `lexicon` may hold parts of them too).
-  bool on_placed_text = false;
+  // ... and when the box lies on one of them, those texts whole (`lexicon` may hold parts of
+  // them too); null otherwise.
   const std::vector<std::string>* placed_near = nullptr;
+  bool onPlacedText() const { return placed_near != nullptr; }
   // The texts whose characters a free reading may use: `lexicon`, or the whole floor
   // lexicon when `lexicon` is the part of it placed near the box. Null: `lexicon`.
   const std::vector<std::string>* reading_lexicon = nullptr;
@@ -220,7 +220,7 @@ std::vector<std::optional<TextInstance>> readJobs(
           jobs[job].reading_lexicon ? jobs[job].reading_lexicon : jobs[job].lexicon;
       LexiconDecoding d =
           decodeWithLexicon(outputs[k].matrix(), charset, lexicon,
-                            jobs[job].on_placed_text ? options.on_placed_text_lexicon
+                            jobs[job].onPlacedText() ? options.on_placed_text_lexicon
                             : jobs[job].placed       ? options.placed_lexicon
                                                      : options.lexicon,
                             readingClasses(reading_lexicon));
@@ -293,7 +293,7 @@ std::vector<std::optional<TextInstance>> readJobs(
     }
     // A confident free reading of a box on a placed text that is one end of that text, glyph
     // for glyph, is that text partly seen.
-    if (!d.matched && read && jobs[i].placed_near != nullptr && options.min_cut_part_chars > 0) {
+    if (!d.matched && read && jobs[i].onPlacedText() && options.min_cut_part_chars > 0) {
       const CutCandidates parts = withCutParts(*jobs[i].placed_near, true, true,
                                                static_cast<size_t>(options.min_cut_part_chars));
       if (const auto whole = wholeOfPart(d.raw_text, parts)) {
@@ -424,10 +424,10 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
         job.reading_lexicon = job.lexicon;
         job.lexicon = &placed_lexicons.back();
         job.placed = true;
-        job.on_placed_text = options_.on_placed_text_margin_m >= 0.0 &&
-                             map::placedTextUnder(request.placed_floor_texts, ground,
-                                                  options_.on_placed_text_margin_m) != nullptr;
-        if (job.on_placed_text) job.placed_near = job.lexicon;
+        if (options_.on_placed_text_margin_m >= 0.0 &&
+            map::placedTextUnder(request.placed_floor_texts, ground,
+                                 options_.on_placed_text_margin_m) != nullptr)
+          job.placed_near = job.lexicon;
       }
       // The texts placed there say which way round the box reads.
       const auto reading = map::readingDirectionNear(request.placed_floor_texts, ground, radius,

@@ -44,6 +44,15 @@ const std::vector<std::string>& paintBins() {
 
 const std::string& paintBin(double paint_wear) { return paintBins()[paint_wear > 0.0 ? 1 : 0]; }
 
+const std::vector<std::string>& sightBins() {
+  static const std::vector<std::string> kBins = {"in full sight", "partly hidden"};
+  return kBins;
+}
+
+const std::string& sightBin(const io::LabelInstance& instance) {
+  return sightBins()[instance.occluded_fraction > 0.0 || instance.truncated ? 1 : 0];
+}
+
 const std::vector<std::string>& inkBins() {
   static const std::vector<std::string> kBins = {"ink SNR under 8", "ink SNR 8-12", "ink SNR 12-20",
                                                  "ink SNR 20 and more"};
@@ -170,6 +179,7 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
       out.push_back(&result_.parking_numbers_by_height[heightBin(
           geometry::apparentHeightPx(io::textPolygon(polygon)))]);
       if (label) out.push_back(&result_.parking_numbers_by_paint[paintBin(label->paint_wear)]);
+      if (label) out.push_back(&result_.parking_numbers_by_sight[sightBin(*label)]);
       if (label && label->ink_snr)
         out.push_back(&result_.parking_numbers_by_ink[inkBin(*label->ink_snr)]);
     }

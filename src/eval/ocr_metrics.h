@@ -62,6 +62,9 @@ struct OcrEvaluation {
   // Parking numbers by their paint (paintBin of io::LabelInstance::paint_wear): intact or worn.
   // A false detection has no paint and counts in none (added later).
   std::map<std::string, OcrCounts> parking_numbers_by_paint;
+  // Parking numbers in full sight and partly hidden (sightBin): a raw reading can be exact
+  // only where every character shows. A false detection counts in neither (added later).
+  std::map<std::string, OcrCounts> parking_numbers_by_sight;
   // Parking numbers by how far their ink stands out of the sensor's noise (inkBin of
   // io::LabelInstance::ink_snr); labels without it count in none (added later).
   std::map<std::string, OcrCounts> parking_numbers_by_ink;
@@ -124,6 +127,11 @@ const std::string& heightBin(double height_px);
 // The bins of OcrEvaluation::parking_numbers_by_paint and the bin of a label's paint wear.
 const std::vector<std::string>& paintBins();
 const std::string& paintBin(double paint_wear);
+
+// The bins of OcrEvaluation::parking_numbers_by_sight and the bin of a label: partly hidden
+// when anything occludes part of it or the image's edge cuts it.
+const std::vector<std::string>& sightBins();
+const std::string& sightBin(const io::LabelInstance& instance);
 
 // The bins of OcrEvaluation::parking_numbers_by_ink, in increasing order, and the bin of a
 // label's ink SNR (sim::featureSnr; 5 is the labels' legibility floor).

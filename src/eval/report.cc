@@ -133,6 +133,9 @@ nlohmann::json ocrEvaluationJson(const OcrEvaluation& ocr) {
   o["parking_numbers_by_paint"] = nlohmann::json::object();
   for (const auto& [bin, c] : ocr.parking_numbers_by_paint)
     o["parking_numbers_by_paint"][bin] = countsJson(c);
+  o["parking_numbers_by_sight"] = nlohmann::json::object();
+  for (const auto& [bin, c] : ocr.parking_numbers_by_sight)
+    o["parking_numbers_by_sight"][bin] = countsJson(c);
   o["parking_numbers_by_ink"] = nlohmann::json::object();
   for (const auto& [bin, c] : ocr.parking_numbers_by_ink)
     o["parking_numbers_by_ink"][bin] = countsJson(c);

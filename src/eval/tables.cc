@@ -150,6 +150,16 @@ Table table3Paint(const OcrEvaluation& ocr) {
       "Paint", paintBins(), ocr.parking_numbers_by_paint);
 }
 
+Table table3Sight(const OcrEvaluation& ocr) {
+  return subsetTable(
+      "table3_sight", "Table 3 by sight: parking numbers in full sight and partly hidden",
+      "Partly hidden: a car, a pillar or the vehicle's body hides part of the number (the "
+      "labels' occluded_fraction > 0, under half for a number that counts), or the image's edge "
+      "cuts it. A raw reading of such a number can be exact only where every character still "
+      "shows. False detections count in neither row (their FP is 0).",
+      "Sight", sightBins(), ocr.parking_numbers_by_sight);
+}
+
 Table table3Ink(const OcrEvaluation& ocr) {
   return subsetTable(
       "table3_ink", "Table 3 by ink contrast: parking numbers by their ink's signal to noise",
@@ -208,7 +218,7 @@ Table table3Drives(const OcrEvaluation& ocr) {
 std::vector<Table> table3All(const OcrEvaluation& ocr,
                              const std::optional<AnomalyFilterCounts>& afm) {
   std::vector<Table> out = {table3(ocr, afm), table3Conditions(ocr), table3Heights(ocr),
-                            table3Paint(ocr)};
+                            table3Paint(ocr), table3Sight(ocr)};
   if (!ocr.parking_numbers_by_ink.empty()) out.push_back(table3Ink(ocr));
   out.push_back(table3HeightRule(ocr));
   if (ocr.parking_numbers_per_frame_set.numbers > 0) out.push_back(table3FrameSets(ocr));

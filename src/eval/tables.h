@@ -38,6 +38,8 @@ Table table3Conditions(const OcrEvaluation& ocr);
 Table table3Heights(const OcrEvaluation& ocr);
 // Parking numbers with intact and worn paint (OcrEvaluation::parking_numbers_by_paint).
 Table table3Paint(const OcrEvaluation& ocr);
+// Parking numbers in full sight and partly hidden (OcrEvaluation::parking_numbers_by_sight).
+Table table3Sight(const OcrEvaluation& ocr);
 // Parking numbers by their ink's SNR (OcrEvaluation::parking_numbers_by_ink); table3All adds
 // it when the labels carry one.
 Table table3Ink(const OcrEvaluation& ocr);
@@ -47,7 +49,8 @@ Table table3HeightRule(const OcrEvaluation& ocr);
 Table table3FrameSets(const OcrEvaluation& ocr);
 // Parking numbers per drive (OcrEvaluation::parking_numbers_per_drive).
 Table table3Drives(const OcrEvaluation& ocr);
-// The six above, in that order (the frame-set and drive tables only when they have numbers).
+// All of the above, in that order (the ink table only when the labels carry ink SNRs, the
+// frame-set and drive tables only when they have numbers).
 std::vector<Table> table3All(const OcrEvaluation& ocr,
                              const std::optional<AnomalyFilterCounts>& afm);
 

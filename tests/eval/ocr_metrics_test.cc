@@ -166,6 +166,35 @@ TEST(OcrMetrics, ParkingNumbersAreCountedByTheirPaint) {
   EXPECT_EQ(paintBin(0.01), "worn paint");
 }
 
+// A number partly hidden, or cut by the image's edge, goes to "partly hidden"; its raw reading
+// of the part that shows counts there, not beside the numbers in full sight.
+TEST(OcrMetrics, ParkingNumbersAreCountedByWhetherTheyAreInFullSight) {
+  io::ImageLabels truth;
+  truth.instances = {
+      label(0, 0, 100, 30, "B2-117", TextClass::kParkingNumber),         // in sight, raw right
+      label(200, 0, 300, 30, "B2-118", TextClass::kParkingNumber, 0.3),  // hidden, raw a part
+      label(400, 0, 500, 30, "B2-119", TextClass::kParkingNumber),       // cut by the edge
+      label(600, 0, 700, 30, "B2-120", TextClass::kParkingNumber, 0.7),  // don't care
+  };
+  truth.instances[2].truncated = true;
+  const std::vector<ocr::TextInstance> detections = {
+      detection(0, 0, 100, 30, "B2-117", "B2-117", TextClass::kParkingNumber),
+      detection(200, 0, 300, 30, "B2-118", "-118", TextClass::kParkingNumber),
+      detection(800, 0, 900, 30, "B2-121", "B2-121", TextClass::kParkingNumber),  // false
+  };
+  // truths, TP, FN, FP, read with the lexicon, read raw
+  auto counts = [](const OcrCounts& c) {
+    return std::vector<size_t>{c.truths, c.tp, c.fn, c.fp, c.recognized, c.recognized_raw};
+  };
+  OcrEvaluator evaluator;
+  evaluator.add(truth, detections, {});
+  const auto& bins = evaluator.result().parking_numbers_by_sight;
+  ASSERT_EQ(bins.size(), 2u);
+  EXPECT_EQ(counts(bins.at("in full sight")), (std::vector<size_t>{1, 1, 0, 0, 1, 1}));
+  EXPECT_EQ(counts(bins.at("partly hidden")), (std::vector<size_t>{2, 1, 1, 0, 1, 0}));
+  EXPECT_EQ(counts(evaluator.result().overall), (std::vector<size_t>{3, 2, 1, 1, 2, 1}));
+}
+
 // Numbers go to the bin of their ink's SNR; labels without one, and false detections, to none.
 TEST(OcrMetrics, ParkingNumbersAreCountedByTheirInkSnr) {
   io::ImageLabels truth;

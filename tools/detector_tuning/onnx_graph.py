@@ -169,7 +169,8 @@ class _OneDnnMatMul(torch.autograd.Function):
 
 def _matmul(ins, a, opset):
     x, w = ins
-    if w.dim() != 2 or x.dim() < 2 or not torch.backends.mkldnn.is_available():
+    if (w.dim() != 2 or x.dim() < 2 or x.device.type != "cpu"
+            or not torch.backends.mkldnn.is_available()):
         return torch.matmul(x, w)
     rows = x.reshape(-1, x.shape[-1])
     return _OneDnnMatMul.apply(rows, w).reshape(*x.shape[:-1], w.shape[-1])
@@ -181,7 +182,7 @@ def _transpose(ins, a, opset):
 
 
 def _shape(ins, a, opset):
-    return torch.tensor(ins[0].shape, dtype=torch.int64)
+    return torch.tensor(ins[0].shape, dtype=torch.int64, device=ins[0].device)
 
 
 def _cast(ins, a, opset):
@@ -271,6 +272,14 @@ class OnnxGraph(torch.nn.Module):
                     names.add(n.input[1])
         return names
 
+    def to_device(self, device):
+        """Moves every tensor of the graph, trainable or not, to `device` (e.g. "cuda"); call
+        it before learn_only_columns."""
+        self.to(device)
+        self.buffers_ = {k: v.to(device) for k, v in self.buffers_.items()}
+        self.columns = {k: v.to(device) for k, v in self.columns.items()}
+        return self
+
     def weight(self, name):
         key = _safe(name)
         if name in self.columns:
@@ -292,7 +301,7 @@ class OnnxGraph(torch.nn.Module):
             raise KeyError(f"{name} is not a trainable weight of the graph")
         full = self.params[key].detach().clone()
         del self.params[key]
-        columns = torch.as_tensor(columns, dtype=torch.int64)
+        columns = torch.as_tensor(columns, dtype=torch.int64, device=full.device)
         self.buffers_[name] = full
         self.columns[name] = columns
         self.column_params[key] = torch.nn.Parameter(full[..., columns].clone())

@@ -188,9 +188,11 @@ def ctc_loss(logits, targets):
     """Mean over the batch of each crop's CTC loss."""
     log_probs = F.log_softmax(logits, dim=-1).transpose(0, 1)  # [T, N, C]
     n, steps = logits.shape[0], logits.shape[1]
-    flat = torch.tensor([c for t in targets for c in t], dtype=torch.int64)
-    lengths = torch.tensor([len(t) for t in targets], dtype=torch.int64)
-    losses = F.ctc_loss(log_probs, flat, torch.full((n,), steps, dtype=torch.int64), lengths,
+    device = logits.device
+    flat = torch.tensor([c for t in targets for c in t], dtype=torch.int64, device=device)
+    lengths = torch.tensor([len(t) for t in targets], dtype=torch.int64, device=device)
+    steps_all = torch.full((n,), steps, dtype=torch.int64, device=device)
+    losses = F.ctc_loss(log_probs, flat, steps_all, lengths,
                         blank=BLANK, reduction="none", zero_infinity=True)
     return losses.mean()
 
@@ -272,9 +274,9 @@ def train_epoch(net, split, logits_at, learned, stock, opt, args, rng):
 def save(learned, columns, path, metadata):
     tensors = {}
     for name, p in learned.items():
-        tensors[name] = p.detach().numpy().astype(np.float16)
+        tensors[name] = p.detach().cpu().numpy().astype(np.float16)
         if name in CLASSIFIER:
-            tensors[name + "#columns"] = columns.numpy().astype(np.int64)
+            tensors[name + "#columns"] = columns.cpu().numpy().astype(np.int64)
     tmp = path + ".tmp.npz"
     np.savez_compressed(tmp, **tensors, __metadata__=np.array(repr(metadata)))
     os.replace(tmp, path)

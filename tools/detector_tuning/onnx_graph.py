@@ -274,7 +274,7 @@ class OnnxGraph(torch.nn.Module):
 
     def to_device(self, device):
         """Moves every tensor of the graph, trainable or not, to `device` (e.g. "cuda"); call
-        it before learn_only_columns."""
+        it first, before choosing what learns and making an optimizer."""
         self.to(device)
         self.buffers_ = {k: v.to(device) for k, v in self.buffers_.items()}
         self.columns = {k: v.to(device) for k, v in self.columns.items()}

@@ -14,27 +14,18 @@ import os
 
 import cv2
 
+from crop_index import crops_of
+
 
 def pack(folder, out_root, quality):
-    index = os.path.join(folder, "index.tsv")
-    if not os.path.isfile(index):
-        raise SystemExit(f"pack_crops.py: {index} not found")
     out = os.path.join(out_root, os.path.basename(os.path.normpath(folder)))
     lines = []
-    with open(index, encoding="utf-8") as f:
-        for line in f:
-            fields = line.rstrip("\n").split("\t")
-            if len(fields) < 2:
-                continue
-            image = cv2.imread(os.path.join(folder, fields[0]), cv2.IMREAD_COLOR)
-            if image is None:
-                raise SystemExit(f"pack_crops.py: {fields[0]} in {folder} is no image")
-            rel = os.path.splitext(fields[0])[0] + ".jpg"
-            os.makedirs(os.path.dirname(os.path.join(out, rel)), exist_ok=True)
-            if not cv2.imwrite(os.path.join(out, rel), image,
-                               [cv2.IMWRITE_JPEG_QUALITY, quality]):
-                raise SystemExit(f"pack_crops.py: cannot write {os.path.join(out, rel)}")
-            lines.append("\t".join([rel] + fields[1:]))
+    for rel, image, fields in crops_of(folder, "pack_crops.py"):
+        jpeg = os.path.splitext(rel)[0] + ".jpg"
+        os.makedirs(os.path.dirname(os.path.join(out, jpeg)), exist_ok=True)
+        if not cv2.imwrite(os.path.join(out, jpeg), image, [cv2.IMWRITE_JPEG_QUALITY, quality]):
+            raise SystemExit(f"pack_crops.py: cannot write {os.path.join(out, jpeg)}")
+        lines.append("\t".join([jpeg] + fields[1:]))
     with open(os.path.join(out, "index.tsv"), "w", encoding="utf-8") as f:
         f.write("\n".join(lines) + "\n")
     print(f"{folder}: {len(lines)} crops -> {out}")

@@ -31,6 +31,7 @@ import torch
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import train as tail  # noqa: E402  (train.py: data, CTC and the tuning file's format)
 from augment import augment  # noqa: E402
+from crop_index import crops_of  # noqa: E402
 
 from onnx_graph import OnnxGraph  # noqa: E402  (put on the path by train.py)
 
@@ -39,19 +40,10 @@ def load_crops(folders):
     """[(BGR crop, text, class)] of every FOLDER/index.tsv; a crop may be any image file."""
     samples = []
     for folder in folders:
-        index = os.path.join(folder, "index.tsv")
-        if not os.path.isfile(index):
-            raise SystemExit(f"train_whole.py: {index} not found")
-        with open(index, encoding="utf-8") as f:
-            for line in f:
-                fields = line.rstrip("\n").split("\t")
-                if len(fields) < 2:
-                    continue
-                image = cv2.imread(os.path.join(folder, fields[0]), cv2.IMREAD_COLOR)
-                if image is None or image.shape[0] != tail.HEIGHT:
-                    raise SystemExit(f"train_whole.py: {fields[0]} in {folder} is no "
-                                     f"{tail.HEIGHT} px tall image")
-                samples.append((image, fields[1], fields[2] if len(fields) > 2 else ""))
+        for rel, image, fields in crops_of(folder, "train_whole.py"):
+            if image.shape[0] != tail.HEIGHT:
+                raise SystemExit(f"train_whole.py: {rel} in {folder} is not {tail.HEIGHT} px tall")
+            samples.append((image, fields[1], fields[2] if len(fields) > 2 else ""))
     if not samples:
         raise SystemExit(f"train_whole.py: no crops in {folders}")
     return samples

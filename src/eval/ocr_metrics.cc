@@ -178,8 +178,10 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
     if (cls == map::TextClass::kParkingNumber) {
       out.push_back(&result_.parking_numbers_by_height[heightBin(
           geometry::apparentHeightPx(io::textPolygon(polygon)))]);
-      if (label) out.push_back(&result_.parking_numbers_by_paint[paintBin(label->paint_wear)]);
-      if (label) out.push_back(&result_.parking_numbers_by_sight[sightBin(*label)]);
+      if (label) {
+        out.push_back(&result_.parking_numbers_by_paint[paintBin(label->paint_wear)]);
+        out.push_back(&result_.parking_numbers_by_sight[sightBin(*label)]);
+      }
       if (label && label->ink_snr)
         out.push_back(&result_.parking_numbers_by_ink[inkBin(*label->ink_snr)]);
     }

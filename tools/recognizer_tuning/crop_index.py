@@ -13,9 +13,12 @@ def crops_of(folder, tool):
         raise SystemExit(f"{tool}: {index} not found (crops of parkloc train recognizer-data)")
     with open(index, encoding="utf-8") as f:
         for line in f:
-            fields = line.rstrip("\n").split("\t")
-            if len(fields) < 2:
+            line = line.rstrip("\n")
+            if not line:
                 continue
+            fields = line.split("\t")
+            if len(fields) < 2:
+                raise SystemExit(f"{tool}: {index}: line without a text: {line!r}")
             image = cv2.imread(os.path.join(folder, fields[0]), cv2.IMREAD_COLOR)
             if image is None:
                 raise SystemExit(f"{tool}: {fields[0]} in {folder} is no image")

@@ -25,7 +25,6 @@ import random
 import sys
 import time
 
-import cv2
 import numpy as np
 import torch
 import torch.nn.functional as F
@@ -33,6 +32,9 @@ import torch.nn.functional as F
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
                                 "detector_tuning"))
 from onnx_graph import OnnxGraph  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from crop_index import crops_of  # noqa: E402
 
 FEATURES = "p2o.Concat.8"  # [N, 960, 1, T]: the neck's output, input of the head
 # The backbone's last stage starts here, [N, 240, 12, W / 4]; its first weight follows.
@@ -76,19 +78,10 @@ def load_split(folders):
 def load_folder(folder):
     """[(BGR crop, text)] of FOLDER/index.tsv."""
     samples = []
-    index = os.path.join(folder, "index.tsv")
-    if not os.path.isfile(index):
-        raise SystemExit(f"train.py: {index} not found (crops of parkloc train recognizer-data)")
-    with open(index, encoding="utf-8") as f:
-        for line in f:
-            line = line.rstrip("\n")
-            if not line:
-                continue
-            rel, text = line.split("\t")[:2]
-            image = cv2.imread(os.path.join(folder, rel), cv2.IMREAD_COLOR)
-            if image is None or image.shape[0] != HEIGHT:
-                raise SystemExit(f"train.py: {rel} in {folder} is no {HEIGHT} px tall image")
-            samples.append((image, text))
+    for rel, image, fields in crops_of(folder, "train.py"):
+        if image.shape[0] != HEIGHT:
+            raise SystemExit(f"train.py: {rel} in {folder} is no {HEIGHT} px tall image")
+        samples.append((image, fields[1]))
     if not samples:
         raise SystemExit(f"train.py: no crops in {folder}/index.tsv")
     return samples

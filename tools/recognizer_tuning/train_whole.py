@@ -24,7 +24,6 @@ import random
 import sys
 import time
 
-import cv2
 import numpy as np
 import torch
 
@@ -60,8 +59,9 @@ class Crops:
         self.widths = [img.shape[1] for img, _, _ in samples]
         groups = {}
         for i, (img, _, _) in enumerate(samples):
-            if tail.ctc_min_steps(self.targets[i]) <= tail.padded_width(img.shape[1]) // tail.STEP:
-                groups.setdefault(tail.padded_width(img.shape[1]), []).append(i)
+            width = tail.padded_width(img.shape[1])
+            if tail.ctc_min_steps(self.targets[i]) <= width // tail.STEP:
+                groups.setdefault(width, []).append(i)
         self.groups = {}  # input width -> (sample indices, [n, 3, 48, width] tensor)
         for width, indices in groups.items():
             x = np.stack([tail.normalise(samples[i][0], width) for i in indices])
@@ -170,6 +170,16 @@ def main():
     best, best_step = before, 0
     tail.save(learned, columns, args.out, {**metadata, "step": 0, "after": metadata["before"]})
 
+    def checkpoint(step):
+        """Checks val now, and writes the tensors when they beat the best so far."""
+        nonlocal best, best_step
+        result = check(f"step {step} ({time.time() - started:.0f} s)")
+        if result[0] > best[0]:
+            best, best_step = result, step
+            tail.save(learned, columns, args.out,
+                      {**metadata, "step": step,
+                       "after": {"val_exact_alphabet": result[0], "per_class": result[1]}})
+
     opt = torch.optim.AdamW(list(learned.values()), lr=args.lr, weight_decay=0.0)
     total_steps, step, started = args.max_steps or 10**9, 0, time.time()
     while step < total_steps:
@@ -196,20 +206,9 @@ def main():
             if step % 50 == 0:
                 print(f"step {step}: loss {loss.item():.4f}", flush=True)
             if step % args.val_every == 0:
-                result = check(f"step {step} ({time.time() - started:.0f} s)")
-                if result[0] > best[0]:
-                    best, best_step = result, step
-                    tail.save(learned, columns, args.out,
-                              {**metadata, "step": step,
-                               "after": {"val_exact_alphabet": result[0],
-                                         "per_class": result[1]}})
+                checkpoint(step)
     if step % args.val_every != 0:
-        result = check(f"step {step} ({time.time() - started:.0f} s)")
-        if result[0] > best[0]:
-            best, best_step = result, step
-            tail.save(learned, columns, args.out,
-                      {**metadata, "step": step,
-                       "after": {"val_exact_alphabet": result[0], "per_class": result[1]}})
+        checkpoint(step)
     print(f"best: step {best_step}, val exact {best[0]:.4f} {best[1]}, written to {args.out}",
           flush=True)
 

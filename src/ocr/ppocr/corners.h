@@ -11,8 +11,8 @@
 namespace parkloc::ocr {
 
 struct CornerOptions {
-  bool refine = true;  // false: the detected box is reported as it is
-  CornerRefinementOptions fit;
+  bool refine = true;           // false: the detected box is reported as it is
+  CornerRefinementOptions fit;  // how the ink is found and the fit checked
 };
 
 // The corners fitted to the ink (on the ground plane when `camera` is given, else in the

@@ -33,7 +33,8 @@ struct DetectionOptions {
   // A raw image is detected with its longer side scaled to this (a multiple of the detector's
   // stride): PaddleOCR's own input size.
   int scene_max_side = 960;
-  // PaddleOCR's post-processing, for its detector on raw images and map-guided patches.
+  // PaddleOCR's post-processing, for its detector wherever it runs: raw images, map-guided
+  // patches, and the floor view or the band when no detector of their own is given.
   DbOptions scene_db;
   // The bird's-eye view of the floor the floor detector looks at.
   GroundViewOptions floor_view;
@@ -41,8 +42,8 @@ struct DetectionOptions {
   // tools/detector_tuning/db_targets.py), which an unclip ratio of 2 grows back to the whole
   // box of a text 3-4 times as long as high (PaddleOCR's 1.5 leaves it a fifth too low, and a
   // crop that cuts into the glyphs reads worse). Its thin kernels average less over their
-  // rectangle than PaddleOCR's, so the box threshold is DB's binary threshold; a weak box is
-  // kept only when its reading is (ReadingOptions::min_text_confidence).
+  // rectangle than PaddleOCR's, so the box threshold is DB's binary threshold; a box under
+  // confident_box_score is kept only when its reading names a text.
   DbOptions floor_db = [] {
     DbOptions o;
     o.unclip_ratio = 2.0;

@@ -30,13 +30,13 @@ namespace parkloc::ocr {
 
 // The spotter's options, one section per stage.
 struct PpOcrOptions {
-  PpOcrModelPaths models;
-  OnnxOptions onnx;
-  DetectionOptions detection;
-  MapPriorOptions map_prior;
-  ReadingOptions reading;
-  CornerOptions corners;
-  RegionOptions regions;
+  PpOcrModelPaths models;      // the network files
+  OnnxOptions onnx;            // ONNX Runtime's threads
+  DetectionOptions detection;  // which detector looks where, and its post-processing
+  MapPriorOptions map_prior;   // what the map says about a floor box under a predicted pose
+  ReadingOptions reading;      // the recognizers' cascade and lexicon decoding
+  CornerOptions corners;       // the corner fit to the ink
+  RegionOptions regions;       // map-guided regions
 };
 
 class PpOcrSpotter : public TextSpotter {

@@ -63,7 +63,7 @@ void BM_DetectionPlacedWindows(benchmark::State& state) {
   const ocr::DbDetector detector(kModels + "/ch_PP-OCRv4_det_infer.onnx", {});
   const auto rig = geometry::defaultRig();
   const auto* left = rig.find("left");
-  const ocr::GroundView view(*left), reach(*left, ocr::PpOcrOptions{}.placed_reach);
+  const ocr::GroundView view(*left), reach(*left, ocr::DetectionOptions{}.placed_reach);
   std::vector<map::PlacedText> placed;
   for (int k = 0; k < state.range(0); ++k) {  // 2.7 m apart along the left camera's row
     map::PlacedText text;
@@ -114,7 +114,7 @@ ocr::PpOcrSpotter& spotter(ocr::FisheyeView view) {
   if (!s) {
     ocr::PpOcrOptions options;
     options.models = ocr::PpOcrModelPaths::inDirectory(kModels);
-    options.view = view;
+    options.detection.view = view;
     s = std::make_unique<ocr::PpOcrSpotter>(options);
   }
   return *s;
@@ -136,17 +136,12 @@ BENCHMARK(BM_SpotFullFrame)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecon
 
 // What `parkloc ocr --camera` runs by default: the fine-tuned floor detector and both class
 // heads (read and unread) on top of PaddleOCR's recognizer, with parkloc's tuned recognizer
-// for second opinions (this frame's number needs none: see docs/OCR.md, session 10, for
-// the cost on the test split).
+// for second opinions (this frame's number needs none: docs/OCR.md gives the cost on the
+// test split).
 void BM_SpotFullFrameShipped(benchmark::State& state) {
   static const auto shipped = [] {
     ocr::PpOcrOptions options;
-    options.models = ocr::PpOcrModelPaths::inDirectory(kModels);
-    options.models.floor_detection = ocr::floorDetectorIn(kModels);
-    options.models.fallback_recognition = ocr::tunedRecognizerIn(kModels);
-    options.models.classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
-    options.models.unread_classifier =
-        std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier_unread.yml";
+    options.models = ocr::shippedModelPaths(kModels, std::string(PARKLOC_SOURCE_DIR) + "/models");
     return std::make_unique<ocr::PpOcrSpotter>(options);
   }();
   const auto rig = geometry::defaultRig();

@@ -39,13 +39,13 @@ void run(const OcrArgs& args) {
   ocr::PpOcrOptions options = app::spotterOptions(args.spotter);
   options.models.classifier = args.spotter.classifier;  // a missing file is an error here
   options.models.unread_classifier = args.spotter.unread_classifier;
-  options.detection_max_side = args.det_side;
-  options.direction =
+  options.detection.scene_max_side = args.det_side;
+  options.reading.direction =
       args.direction == "both" ? ocr::DirectionMode::kDecodeBoth : ocr::DirectionMode::kClassifier;
-  options.refine_corners = !args.no_refine;
-  options.view = args.view == "raw"      ? ocr::FisheyeView::kRaw
-                 : args.view == "ground" ? ocr::FisheyeView::kGround
-                                         : ocr::FisheyeView::kGroundAndRaw;
+  options.corners.refine = !args.no_refine;
+  options.detection.view = args.view == "raw"      ? ocr::FisheyeView::kRaw
+                           : args.view == "ground" ? ocr::FisheyeView::kGround
+                                                   : ocr::FisheyeView::kGroundAndRaw;
   const geometry::Rig rig =
       args.calib.empty() ? geometry::defaultRig() : io::loadCalibration(args.calib);
   const geometry::RigCamera* camera = nullptr;

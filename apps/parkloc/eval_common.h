@@ -16,50 +16,37 @@
 
 namespace parkloc::app {
 
-// --floor-detector: '' for PaddleOCR's own, 'tuned' for parkloc's in the model folder, or a file.
-inline std::string floorDetectorPath(const std::string& value, const std::string& models) {
-  return value == "tuned" ? ocr::floorDetectorIn(models) : value;
-}
-
-// --band-detector: '' for none, 'tuned' for parkloc's in the model folder, or a file.
-inline std::string bandDetectorPath(const std::string& value, const std::string& models) {
-  return value == "tuned" ? ocr::bandDetectorIn(models) : value;
-}
-
-// --recognizer: '' for PaddleOCR's own, 'tuned' for parkloc's in the model folder, or a file.
-inline std::string recognizerPath(const std::string& value, const std::string& models) {
-  if (value.empty()) return ocr::PpOcrModelPaths::inDirectory(models).recognition;
-  return value == "tuned" ? ocr::tunedRecognizerIn(models) : value;
-}
+// The folders the shipped models are found in; which files in them make the spotter is the
+// ocr library's choice (ocr::shippedModelPaths).
+inline const std::string kModelDir = PARKLOC_MODEL_DIR;
+inline const std::string kClassifierDir = std::string(PARKLOC_SOURCE_DIR) + "/models";
 
 struct SpotterArgs {
-  std::string models = PARKLOC_MODEL_DIR;
-  std::string classifier = std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier.yml";
+  std::string models = kModelDir;
+  std::string classifier = ocr::shippedModelPaths(kModelDir, kClassifierDir).classifier;
   std::string unread_classifier =
-      std::string(PARKLOC_SOURCE_DIR) + "/models/text_classifier_unread.yml";
-  std::string floor_detector = "tuned";       // '', 'tuned' or a path (floorDetectorPath)
-  std::string recognizer;                     // '', 'tuned' or a path (recognizerPath)
-  std::string band_detector;                  // '', 'tuned' or a path (bandDetectorPath)
-  std::string fallback_recognizer = "tuned";  // '', 'tuned' or a path (recognizerPath)
+      ocr::shippedModelPaths(kModelDir, kClassifierDir).unread_classifier;
+  ocr::ModelChoices choices;  // each '', 'tuned' or a path
   ocr::GroundViewOptions floor_view;
-  ocr::GroundViewOptions placed_reach = ocr::PpOcrOptions{}.placed_reach;
-  double placed_window = ocr::PpOcrOptions{}.placed_windows.side_m;
-  double placed_window_min_height = ocr::PpOcrOptions{}.placed_windows.min_height_px;
-  int placed_windows_max = ocr::PpOcrOptions{}.placed_windows.max_texts;
-  double floor_unclip_ratio = ocr::PpOcrOptions{}.floor_db.unclip_ratio;
-  float floor_box_threshold = ocr::PpOcrOptions{}.floor_db.box_threshold;
-  float floor_binary_threshold = ocr::PpOcrOptions{}.floor_db.binary_threshold;
-  std::string reading_alphabet = ocr::PpOcrOptions{}.reading_alphabet;
-  float min_text_confidence = ocr::PpOcrOptions{}.min_text_confidence;
-  float unplaced_class_weight = ocr::PpOcrOptions{}.unplaced_class_weight;
-  double placed_open_world_weight = ocr::PpOcrOptions{}.placed_lexicon.open_world_weight;
-  double on_text_open_world_weight = ocr::PpOcrOptions{}.on_placed_text_lexicon.open_world_weight;
-  double on_text_margin = ocr::PpOcrOptions{}.on_placed_text_margin_m;
-  bool reread_unmatched = !ocr::PpOcrOptions{}.reread_margins.empty();
-  bool placed_size = ocr::PpOcrOptions{}.placed_size.has_value();
-  bool reread_by_both_recognizers = !ocr::PpOcrOptions{}.reread_by_fallback_only;
-  std::vector<float> floor_read_expand = {ocr::PpOcrOptions{}.floor_read_expand_x,
-                                          ocr::PpOcrOptions{}.floor_read_expand_y};
+  ocr::GroundViewOptions placed_reach = ocr::DetectionOptions{}.placed_reach;
+  double placed_window = ocr::DetectionOptions{}.placed_windows.side_m;
+  double placed_window_min_height = ocr::DetectionOptions{}.placed_windows.min_height_px;
+  int placed_windows_max = ocr::DetectionOptions{}.placed_windows.max_texts;
+  double floor_unclip_ratio = ocr::DetectionOptions{}.floor_db.unclip_ratio;
+  float floor_box_threshold = ocr::DetectionOptions{}.floor_db.box_threshold;
+  float floor_binary_threshold = ocr::DetectionOptions{}.floor_db.binary_threshold;
+  std::string reading_alphabet = ocr::ReadingOptions{}.alphabet;
+  float min_text_confidence = ocr::ReadingOptions{}.min_text_confidence;
+  float unplaced_class_weight = ocr::MapPriorOptions{}.unplaced_class_weight;
+  double placed_open_world_weight = ocr::MapPriorOptions{}.placed_lexicon.open_world_weight;
+  double on_text_open_world_weight =
+      ocr::MapPriorOptions{}.on_placed_text_lexicon.open_world_weight;
+  double on_text_margin = ocr::MapPriorOptions{}.on_placed_text_margin_m;
+  bool reread_unmatched = !ocr::ReadingOptions{}.reread_margins.empty();
+  bool placed_size = ocr::MapPriorOptions{}.placed_size.has_value();
+  bool reread_by_both_recognizers = !ocr::ReadingOptions{}.reread_by_fallback_only;
+  std::vector<float> floor_read_expand = {ocr::DetectionOptions{}.floor_read_expand_x,
+                                          ocr::DetectionOptions{}.floor_read_expand_y};
 
   void addTo(CLI::App* cmd) {
     cmd->add_option("--models", models, "Folder with the PP-OCRv4 ONNX models")
@@ -70,18 +57,18 @@ struct SpotterArgs {
                     "Text classifier for boxes nothing could read (YAML); '' for --classifier")
         ->capture_default_str();
     cmd->add_option(
-           "--floor-detector", floor_detector,
+           "--floor-detector", choices.floor_detector,
            "Detector for the floor view: 'tuned' the one parkloc fine-tuned (in --models), "
            "'' PaddleOCR's own, or an ONNX file")
         ->capture_default_str();
-    cmd->add_option("--band-detector", band_detector,
+    cmd->add_option("--band-detector", choices.band_detector,
                     "Detector for the raw image's horizon band (distant floor numbers, pillar "
                     "text): '' none (default), 'tuned' the one parkloc fine-tuned (in --models), "
                     "or an ONNX file");
-    cmd->add_option("--recognizer", recognizer,
+    cmd->add_option("--recognizer", choices.recognizer,
                     "Recognizer: '' PaddleOCR's own (default), 'tuned' the one parkloc "
                     "fine-tuned (in --models), or an ONNX file");
-    cmd->add_option("--fallback-recognizer", fallback_recognizer,
+    cmd->add_option("--fallback-recognizer", choices.fallback_recognizer,
                     "Second recognizer for the full-frame crops the first matches to no lexicon "
                     "entry (its matches are second opinions): 'tuned' the one parkloc "
                     "fine-tuned (in --models), '' none, or an ONNX file")
@@ -145,8 +132,7 @@ struct SpotterArgs {
                   "that text's size on the floor: tightened when too tall or long, refused as "
                   "that text when far too short (default: on)");
     cmd->add_flag("--reread-by-both-recognizers", reread_by_both_recognizers,
-                  "... by the first recognizer too (more time an image; with session 14's two "
-                  "margins it read 0.1 points more)");
+                  "... by the first recognizer too (more time an image for little gain)");
     cmd->add_option("--floor-read-expand", floor_read_expand,
                     "Floor detector: its boxes are read from a crop grown by these factors "
                     "(along, across the text)")
@@ -185,36 +171,31 @@ struct SpotterArgs {
 // The engine's options from the shared flags (the classifier only when its file exists).
 inline ocr::PpOcrOptions spotterOptions(const SpotterArgs& args) {
   ocr::PpOcrOptions options;
-  options.models = ocr::PpOcrModelPaths::inDirectory(args.models);
-  options.models.floor_detection = floorDetectorPath(args.floor_detector, args.models);
-  options.models.recognition = recognizerPath(args.recognizer, args.models);
-  options.models.band_detection = bandDetectorPath(args.band_detector, args.models);
-  if (!args.fallback_recognizer.empty())
-    options.models.fallback_recognition = recognizerPath(args.fallback_recognizer, args.models);
-  options.ground_view = args.floor_view;
-  options.placed_reach = args.placed_reach;
-  options.placed_windows.side_m = args.placed_window;
-  options.placed_windows.min_height_px = args.placed_window_min_height;
-  options.placed_windows.max_texts = args.placed_windows_max;
-  options.floor_db.unclip_ratio = args.floor_unclip_ratio;
-  options.floor_db.box_threshold = args.floor_box_threshold;
-  options.floor_db.binary_threshold = args.floor_binary_threshold;
-  options.reading_alphabet = args.reading_alphabet;
-  options.min_text_confidence = args.min_text_confidence;
-  options.unplaced_class_weight = args.unplaced_class_weight;
-  options.placed_lexicon.open_world_weight = args.placed_open_world_weight;
-  options.on_placed_text_lexicon.open_world_weight = args.on_text_open_world_weight;
-  options.on_placed_text_margin_m = args.on_text_margin;
-  if (!args.reread_unmatched) options.reread_margins.clear();
-  if (!args.placed_size) options.placed_size.reset();
-  options.reread_by_fallback_only = !args.reread_by_both_recognizers;
-  options.floor_read_expand_x = args.floor_read_expand.at(0);
-  options.floor_read_expand_y = args.floor_read_expand.at(1);
-  if (!args.classifier.empty() && std::filesystem::exists(args.classifier)) {
-    options.models.classifier = args.classifier;
-  }
-  if (!args.unread_classifier.empty() && std::filesystem::exists(args.unread_classifier))
-    options.models.unread_classifier = args.unread_classifier;
+  options.models =
+      ocr::modelPathsFor(args.choices, args.models, args.classifier, args.unread_classifier);
+  if (!std::filesystem::exists(args.classifier)) options.models.classifier.clear();
+  if (!std::filesystem::exists(args.unread_classifier)) options.models.unread_classifier.clear();
+  ocr::DetectionOptions& detection = options.detection;
+  detection.floor_view = args.floor_view;
+  detection.placed_reach = args.placed_reach;
+  detection.placed_windows.side_m = args.placed_window;
+  detection.placed_windows.min_height_px = args.placed_window_min_height;
+  detection.placed_windows.max_texts = args.placed_windows_max;
+  detection.floor_db.unclip_ratio = args.floor_unclip_ratio;
+  detection.floor_db.box_threshold = args.floor_box_threshold;
+  detection.floor_db.binary_threshold = args.floor_binary_threshold;
+  detection.floor_read_expand_x = args.floor_read_expand.at(0);
+  detection.floor_read_expand_y = args.floor_read_expand.at(1);
+  options.reading.alphabet = args.reading_alphabet;
+  options.reading.min_text_confidence = args.min_text_confidence;
+  if (!args.reread_unmatched) options.reading.reread_margins.clear();
+  options.reading.reread_by_fallback_only = !args.reread_by_both_recognizers;
+  ocr::MapPriorOptions& map_prior = options.map_prior;
+  map_prior.unplaced_class_weight = args.unplaced_class_weight;
+  map_prior.placed_lexicon.open_world_weight = args.placed_open_world_weight;
+  map_prior.on_placed_text_lexicon.open_world_weight = args.on_text_open_world_weight;
+  map_prior.on_placed_text_margin_m = args.on_text_margin;
+  if (!args.placed_size) map_prior.placed_size.reset();
   return options;
 }
 

@@ -33,7 +33,7 @@ struct SampleOptions {
   size_t max_frames_per_sequence = 0;  // 0: all
   // Which samples an instance gives: its box as read (the labelled text), as an unread box
   // (empty text: the spotter reports boxes its floor detector is sure of even when no
-  // reading is, PpOcrOptions::confident_box_score), or both.
+  // reading is, DetectionOptions::confident_box_score), or both.
   SampleText text = SampleText::kRead;
   std::function<void(size_t done, size_t total)> progress;  // per sequence
 };

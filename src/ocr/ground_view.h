@@ -16,8 +16,8 @@ struct GroundViewOptions {
   double resolution = 0.015;  // metres per view pixel
   // View extent ahead of the camera (along its ground heading). It starts 1.5 m behind the
   // camera: a fisheye sees the floor beside it, at 90 degrees and more off its axis, where
-  // numbers are large (session 5, docs/OCR.md). A camera on a vehicle body sees none of that
-  // floor past the body, and the view is cropped to what it sees (session 16).
+  // numbers are large (docs/OCR.md). A camera on a vehicle body sees none of that floor past
+  // the body, and the view is cropped to what it sees.
   double near = -1.5;
   double far = 6.0;
   double half_width = 6.0;  // to each side

@@ -34,7 +34,7 @@ struct Environment {
 // Never destroyed, on purpose: destroying it at exit joins the pool's threads after the exit
 // handlers have already freed ONNX Runtime's own statics made during the first Run (static
 // destruction runs in reverse order of construction), and ASan once caught a pool thread
-// reading one of them (session 18). Left alive, the idle threads touch nothing while the
+// reading one of them. Left alive, the idle threads touch nothing while the
 // process ends; the pointer stays reachable, so it is no leak to LeakSanitizer.
 Environment& environment(const OnnxOptions& first) {
   static Environment* const environment = new Environment(first);

@@ -1,5 +1,5 @@
 #pragma once
-// A thin wrapper over one ONNX Runtime session with one float input and one float output,
+// A thin wrapper over one ONNX Runtime Ort::Session with one float input and one float output,
 // which is all the PP-OCR models need. Keeps ONNX Runtime out of every other header.
 #include <memory>
 #include <string>
@@ -7,7 +7,7 @@
 
 namespace parkloc::ocr {
 
-// Thread counts of a model's session. The first model loaded sizes one process-wide thread
+// Thread counts of a model's Ort::Session. The first model loaded sizes one process-wide thread
 // pool, and every model with the same counts runs on it: the models of a spotter run one
 // after the other, and pools of their own kept spinning after each run and took the cores
 // from the next model (full-frame spotting 114-117 ms with a pool per model, 80-93 ms with

@@ -1,7 +1,7 @@
 #pragma once
 // Under a predicted pose the map says where floor texts lie beyond a camera's floor view: a
 // side camera sees its own row of parking numbers 6-10 m along the aisle, outside the +-6 m
-// view that the time budget affords (docs/OCR.md, session 17). Detecting small windows of a
+// view that the time budget affords (docs/OCR.md). Detecting small windows of a
 // wider view around those texts finds them for a fraction of a wider view's cost.
 #include <opencv2/core.hpp>
 #include <optional>
@@ -22,7 +22,7 @@ struct PlacedWindowOptions {
   // `text_height_m` tall (apparentHeightPx), gets no window: too small to find. Val split,
   // first 40 frame sets a drive, 10 / 20 / 25 / 30 px: parking-number detection F 0.953 /
   // 0.953 / 0.949 / 0.938 (0.936 without windows), images a second 8.3 / 11.5 / 13.3 / 10.6
-  // on a noisy machine (docs/OCR.md, session 18). 0: every text.
+  // on a noisy machine (docs/OCR.md). 0: every text.
   double min_height_px = 20.0;
   double text_height_m = 0.45;  // the garage's painted numbers
   // At most this many texts get a window, the tallest first (0: every text): each costs

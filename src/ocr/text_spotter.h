@@ -19,7 +19,7 @@ struct TextInstance {
   std::array<cv::Point2f, 4> polygon;
   // The lexicon entry when one matched, else the raw reading when it is confident, else
   // empty: text the detector is sure of that nothing could read (see
-  // PpOcrOptions::confident_box_score).
+  // DetectionOptions::confident_box_score).
   std::string text;
   std::string raw_text;  // greedy CTC reading
   bool lexicon_match = false;
@@ -29,10 +29,10 @@ struct TextInstance {
   bool second_opinion = false;
   // The lexicon matched only the part of `text` that the image shows (a number cut by the
   // image border, read against the texts placed near it: SpotRequest::narrow_to_placed_texts):
-  // `text` is the whole text, `polygon` spans the part (added later).
+  // `text` is the whole text, `polygon` spans the part.
   bool partial = false;
   // The box was tightened to the size the map gives the text it was read as (under a
-  // predicted pose: PpOcrOptions::placed_size), its corners no longer all the ink's.
+  // predicted pose: MapPriorOptions::placed_size): its corners are not all the ink's.
   bool sized_by_map = false;
   map::TextClass cls = map::TextClass::kOther;
   float detection_score = 0.f;
@@ -49,7 +49,7 @@ struct TextInstance {
 struct RegionOfInterest {
   std::array<cv::Point2f, 4> polygon;
   std::vector<std::string> expected_texts;
-  // Tracking (added later): false when the text was read in recent frames, so that only its
+  // Tracking: false when the text was read in recent frames, so that only its
   // corners are fitted to the ink around `predicted` (the text's own projected polygon,
   // reading order), with no detection or recognition; the instance then carries
   // expected_texts.front() and `expected_class`.
@@ -61,7 +61,7 @@ struct RegionOfInterest {
 struct SpotRequest {
   // Texts to decode against (CTC forward score); empty means free reading only.
   std::vector<std::string> lexicon;
-  // The texts painted on the floor, when known (added later): what an engine finds in a
+  // The texts painted on the floor, when known: what an engine finds in a
   // bird's-eye view of the floor decodes against these instead, since upright text (pillars)
   // never shows there as text. Empty: such boxes decode against `lexicon` too.
   std::vector<std::string> floor_lexicon;
@@ -69,8 +69,7 @@ struct SpotRequest {
   // later): a box found in the floor view then decodes against those placed within
   // `placement_radius_m` of its centre instead of all of `floor_lexicon` (none near: a free
   // reading), and is read only the way round they read (when they agree and the box lies along
-  // them; PpOcrOptions::placed_reading_max_angle). Needs `camera`. Empty: no placement, as
-  // before.
+  // them; MapPriorOptions::placed_reading_max_angle). Needs `camera`. Empty: no placement.
   std::vector<map::PlacedText> placed_floor_texts;
   // Half a bay: the centre of a box and of its text differ by the pose's error and, for a
   // number cut by the image border, by up to half its length.
@@ -79,13 +78,13 @@ struct SpotRequest {
   // them (other floor text where none is: every parking number is in the map, not every mark
   // on the floor). False: it decodes against all of `floor_lexicon` and takes any floor class,
   // as without placement, the texts placed near it saying only which way round it reads
-  // (PpOcrOptions::placed_reading_max_angle).
+  // (MapPriorOptions::placed_reading_max_angle).
   // A box that may run out of the image then also decodes against the parts of those texts
   // that a cut would leave (ocr/cut_parts.h; TextInstance::partial).
   bool narrow_to_placed_texts = true;
   // Full frame, with `placed_floor_texts` and `camera`: also look for the floor texts placed
   // beyond the camera's floor view, in windows of a wider view around them (engines that
-  // detect in a floor view; ocr/placed_windows.h) (added later).
+  // detect in a floor view; ocr/placed_windows.h).
   bool look_beyond_the_view = true;
   // When non-empty, spot only inside these regions instead of the full frame.
   std::vector<RegionOfInterest> regions;
@@ -94,13 +93,13 @@ struct SpotRequest {
   const geometry::RigCamera* camera = nullptr;
   // Full frame: read at most this many detected boxes, the largest first (0: all). A
   // tracking vehicle sweeps the full frame only to catch what the map prediction missed,
-  // within its real-time budget (added later).
+  // within its real-time budget.
   int max_reads = 0;
   // Full frame: the detector's input is scaled by this (< 1: coarser and faster, for such a
   // sweep; large text only).
   float detection_scale = 1.f;
   // Full frame: have the engine's fallback recognizer, if it has one, read again what the
-  // first matched to no lexicon entry (TextInstance::second_opinion) (added later).
+  // first matched to no lexicon entry (TextInstance::second_opinion).
   bool second_opinions = true;
 };
 

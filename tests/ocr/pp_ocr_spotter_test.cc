@@ -74,7 +74,7 @@ TEST_F(PpOcrSpotterTest, ReadsARenderedLineUprightAndUpsideDown) {
 TEST(PpOcrSpotterDirections, DecodingBothWaysReadsUprightAndUpsideDownLines) {
   PpOcrOptions options;
   options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
-  options.direction = DirectionMode::kDecodeBoth;
+  options.reading.direction = DirectionMode::kDecodeBoth;
   PpOcrSpotter spotter(options);
   const cv::Mat upright = testing::renderTextLine("B2-117", 40, 24);
   cv::Mat turned;
@@ -285,7 +285,7 @@ TEST_F(PpOcrSpotterTest, AFloorBoxReadAsAPlacedTextIsHeldToItsSize) {
 
   PpOcrOptions without;
   without.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
-  without.placed_size.reset();
+  without.map_prior.placed_size.reset();
   found = PpOcrSpotter(without).spot(scene.image, request);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_TRUE(found[0].lexicon_match);  // the same box, unchecked
@@ -304,7 +304,7 @@ TEST_F(PpOcrSpotterTest, AFloorBoxOnAPlacedTextDecodesUnderItsOwnLexiconOptions)
   };
   PpOcrOptions options;
   options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
-  options.on_placed_text_lexicon.min_posterior = 2.0;  // no reading could pass
+  options.map_prior.on_placed_text_lexicon.min_posterior = 2.0;  // no reading could pass
   PpOcrSpotter spotter(options);
 
   request.placed_floor_texts = placedAt({2.0, 2.6});  // under the box
@@ -317,7 +317,7 @@ TEST_F(PpOcrSpotterTest, AFloorBoxOnAPlacedTextDecodesUnderItsOwnLexiconOptions)
   EXPECT_TRUE(found[0].lexicon_match);
   EXPECT_EQ(found[0].text, "B2-117");
 
-  options.on_placed_text_margin_m = -1.0;  // no box lies on a text
+  options.map_prior.on_placed_text_margin_m = -1.0;  // no box lies on a text
   request.placed_floor_texts = placedAt({2.0, 2.6});
   found = PpOcrSpotter(options).spot(scene.image, request);
   ASSERT_EQ(found.size(), 1u);
@@ -340,7 +340,7 @@ TEST_F(PpOcrSpotterTest, AFreeReadingOfOneEndOfThePlacedTextUnderTheBoxIsThatTex
 
   PpOcrOptions options;
   options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
-  options.on_placed_text_margin_m = -1.0;  // no box lies on a text
+  options.map_prior.on_placed_text_margin_m = -1.0;  // no box lies on a text
   found = PpOcrSpotter(options).spot(scene.image, request);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].text, "-117");
@@ -444,8 +444,8 @@ LeftFloorSpot spotOnTheLeftFloor(const PpOcrModelPaths& models, PpOcrOptions opt
 
 // The corner fit's tolerance on this 250 x 45 px number: the fit thresholds the ink inside
 // the detected box grown a little, so a different box moves it by a pixel or two. Measured:
-// 0.38 px with PaddleOCR's detector, 0.50 px with session 10's tuned floor detector, 2.08 px
-// with session 11's (whose corners gave the lower position error on the test split).
+// 0.38 px with PaddleOCR's detector, 2.08 px with parkloc's floor detector (whose corners give
+// the lower position error on the test split).
 constexpr double kFloorCornerTolerancePx = 2.5;
 
 // One instance, "B2-117" as the lexicon's entry, its corners within the tolerance.
@@ -471,16 +471,16 @@ struct RereadOutcome {
 };
 RereadOutcome spotACutCropWithoutAndWithRereading(PpOcrOptions options) {
   options.models.floor_detection = floorDetectorIn(PARKLOC_MODEL_DIR);
-  options.floor_read_expand_x = 0.7f;
-  options.floor_read_expand_y = 0.6f;
+  options.detection.floor_read_expand_x = 0.7f;
+  options.detection.floor_read_expand_y = 0.6f;
   SpotRequest request = leftFloorRequest({"B2-117", "A023"});
   const cv::Mat image =
       testing::renderFloorText(*request.camera, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45).image;
   request.placed_floor_texts = {{"B2-117", {2.0, 2.6}, {-1.0, 0.0}}};
   RereadOutcome out;
-  options.reread_margins.clear();
+  options.reading.reread_margins.clear();
   out.without = PpOcrSpotter(options).spot(image, request);
-  options.reread_margins = kRereadMargins;
+  options.reading.reread_margins = kRereadMargins;
   out.with = PpOcrSpotter(options).spot(image, request);
   return out;
 }
@@ -504,7 +504,7 @@ TEST(PpOcrSpotterModels, TheFallbackRecognizerAloneReadsTheMarginsWhenThereIsOne
   PpOcrOptions options;
   options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
   options.models.fallback_recognition = tunedRecognizerIn(PARKLOC_MODEL_DIR);
-  ASSERT_TRUE(options.reread_by_fallback_only);
+  ASSERT_TRUE(options.reading.reread_by_fallback_only);
   const auto spot = spotACutCropWithoutAndWithRereading(options);
   for (const TextInstance& inst : spot.without) EXPECT_FALSE(inst.lexicon_match);
   ASSERT_EQ(spot.with.size(), 1u);
@@ -522,7 +522,7 @@ TEST(PpOcrSpotterModels, ANumberPlacedBeyondTheFloorViewIsFoundInAWindowAroundIt
   options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
   options.models.floor_detection = floorDetectorIn(PARKLOC_MODEL_DIR);
   options.models.fallback_recognition = tunedRecognizerIn(PARKLOC_MODEL_DIR);
-  options.ground_view.half_width = 3.0;
+  options.detection.floor_view.half_width = 3.0;
   const auto rig = geometry::defaultRig();
   const geometry::RigCamera* right = rig.find("right");
   ASSERT_NE(right, nullptr);
@@ -547,16 +547,16 @@ TEST(PpOcrSpotterModels, ANumberPlacedBeyondTheFloorViewIsFoundInAWindowAroundIt
   EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), 3.0);
   EXPECT_TRUE(spotWith(options, false).empty());
   PpOcrOptions without = options;
-  without.placed_reach.half_width = 0.0;
+  without.detection.placed_reach.half_width = 0.0;
   EXPECT_TRUE(spotWith(without, true).empty());
 }
 
-// A box read against the texts placed near it decodes under PpOcrOptions::placed_lexicon, one
-// read against the whole floor lexicon under PpOcrOptions::lexicon.
+// A box read against the texts placed near it decodes under MapPriorOptions::placed_lexicon, one
+// read against the whole floor lexicon under ReadingOptions::lexicon.
 TEST(PpOcrSpotterModels, APlacedBoxDecodesUnderThePlacedLexiconsOptions) {
   PpOcrOptions options;
   options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
-  options.placed_lexicon.min_posterior = 1.01;  // no placed match can pass
+  options.map_prior.placed_lexicon.min_posterior = 1.01;  // no placed match can pass
   PpOcrSpotter spotter(options);
   SpotRequest request = leftFloorRequest({"B2-117", "A023"});
   const cv::Mat image =
@@ -574,11 +574,11 @@ TEST(PpOcrSpotterModels, TheFloorDetectorsBoxIsReadWithAMarginAndReportedAsDetec
   auto models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
   models.floor_detection = floorDetectorIn(PARKLOC_MODEL_DIR);
   PpOcrOptions options;
-  options.refine_corners = false;  // the reported polygon is the detected box itself
-  ASSERT_GT(options.floor_read_expand_x, 1.f);
-  ASSERT_GT(options.floor_read_expand_y, 1.f);
+  options.corners.refine = false;  // the reported polygon is the detected box itself
+  ASSERT_GT(options.detection.floor_read_expand_x, 1.f);
+  ASSERT_GT(options.detection.floor_read_expand_y, 1.f);
   const auto with_margin = spotOnTheLeftFloor(models, options);
-  options.floor_read_expand_x = options.floor_read_expand_y = 1.f;
+  options.detection.floor_read_expand_x = options.detection.floor_read_expand_y = 1.f;
   const auto without = spotOnTheLeftFloor(models, options);
   ASSERT_EQ(with_margin.found.size(), 1u);
   ASSERT_EQ(without.found.size(), 1u);
@@ -594,7 +594,7 @@ TEST(PpOcrSpotterModels, AConfidentFloorBoxIsReportedUnreadWhenNoReadingIsSure) 
   PpOcrOptions options;
   options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
   options.models.floor_detection = floorDetectorIn(PARKLOC_MODEL_DIR);
-  options.min_text_confidence = 1.5f;
+  options.reading.min_text_confidence = 1.5f;
   const auto rig = geometry::defaultRig();
   const auto* left = rig.find("left");
   const auto scene = testing::renderFloorText(*left, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45);
@@ -607,10 +607,10 @@ TEST(PpOcrSpotterModels, AConfidentFloorBoxIsReportedUnreadWhenNoReadingIsSure) 
     EXPECT_TRUE(found[0].text.empty());
     EXPECT_FALSE(found[0].lexicon_match);
     EXPECT_EQ(found[0].raw_text, "B2-117");
-    EXPECT_GE(found[0].detection_score, options.confident_box_score);
+    EXPECT_GE(found[0].detection_score, options.detection.confident_box_score);
     EXPECT_LT(maxCornerError(found[0].polygon, scene.truth), kFloorCornerTolerancePx);
   }
-  options.confident_box_score = 1.5f;
+  options.detection.confident_box_score = 1.5f;
   PpOcrSpotter spotter(options);
   EXPECT_TRUE(spotter.spot(scene.image, request).empty());
 }

@@ -1,0 +1,23 @@
+#pragma once
+// Refinement: the reported corners are re-fitted to the text's ink (ocr/corner_refinement.h),
+// because the localization measures with them and DB's boxes are loose rectangles in the raw
+// fisheye image.
+#include <opencv2/core.hpp>
+
+#include "geometry/rig.h"
+#include "ocr/corner_refinement.h"
+#include "ocr/quad.h"
+
+namespace parkloc::ocr {
+
+struct CornerOptions {
+  bool refine = true;           // false: the detected box is reported as it is
+  CornerRefinementOptions fit;  // how the ink is found and the fit checked
+};
+
+// The corners fitted to the ink (on the ground plane when `camera` is given, else in the
+// crop) when the fit is plausible (plausibleRefinement), else `quad` itself.
+Quad refinedCorners(const cv::Mat& image, const Quad& quad, const CornerOptions& options,
+                    const geometry::RigCamera* camera);
+
+}  // namespace parkloc::ocr

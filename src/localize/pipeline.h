@@ -13,7 +13,8 @@
 //                          the paper: centre homography + MCRP / MCAP averaging (paper_pipeline.h)
 //
 // The spotter is injected (ocr::TextSpotter), so this module knows nothing of ONNX. An
-// oracle source (ground-truth labels) passes instances in FrameInput instead of images.
+// oracle source (ground-truth labels, run/oracle_source.h) passes instances in FrameInput
+// instead of images.
 #include <memory>
 #include <optional>
 #include <string>

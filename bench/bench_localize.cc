@@ -110,7 +110,7 @@ void BM_PipelineFrameOracle(benchmark::State& state) {
   testing::SpotOptions spot;
   spot.max_range_m = 10.0;
   PipelineOptions options;
-  options.afm = false;  // the same numbers every iteration would fill the queue oddly
+  options.paper_modules.afm = false;  // the same numbers every iteration would fill the queue oddly
   Pipeline pipeline(rig, map, options);
   FrameInput frame;
   for (const auto& camera : rig.cameras) {

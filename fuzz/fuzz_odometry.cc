@@ -11,7 +11,7 @@ static void fuzzOne(const uint8_t* data, size_t size) {
   static const parkloc::fuzz::ScratchFile input("odometry.csv");
   static const parkloc::fuzz::ScratchFile saved("odometry-saved.csv");
   const std::string& path = input.write(data, size);
-  std::vector<parkloc::io::OdometrySample> samples;
+  std::vector<parkloc::OdometrySample> samples;
   if (!parkloc::fuzz::acceptsOnlyInputError([&] { samples = parkloc::io::loadOdometry(path); }))
     return;
   for (size_t i = 0; i < samples.size(); ++i) {
@@ -21,7 +21,7 @@ static void fuzzOne(const uint8_t* data, size_t size) {
     check(i == 0 || s.timestamp > samples[i - 1].timestamp, "timestamps not increasing");
   }
   parkloc::io::saveOdometry(samples, saved.path());
-  std::vector<parkloc::io::OdometrySample> again;
+  std::vector<parkloc::OdometrySample> again;
   if (!parkloc::fuzz::acceptsOnlyInputError(
           [&] { again = parkloc::io::loadOdometry(saved.path()); }))
     parkloc::fuzz::violation("saved odometry does not load again");

@@ -8,7 +8,7 @@
 #include "apps/parkloc/eval_common.h"
 #include "eval/dataset.h"
 #include "io/sequence.h"
-#include "localize/sequence_runner.h"
+#include "run/sequence_runner.h"
 
 namespace {
 
@@ -23,11 +23,11 @@ struct RunArgs {
   bool no_map_guided = false;
   bool second_opinions = false;
   bool no_sweep_placement = false;
-  int full_frame_interval = parkloc::localize::PipelineOptions{}.full_frame_interval;
-  int reread_interval = parkloc::localize::PipelineOptions{}.reread_interval_frames;
-  int max_reads = parkloc::localize::PipelineOptions{}.max_reads_per_frame;
-  double sweep_scale = parkloc::localize::PipelineOptions{}.sweep_detection_scale;
-  int search_cameras = parkloc::localize::PipelineOptions{}.search_cameras_per_frame;
+  int full_frame_interval = parkloc::localize::PipelineOptions{}.reading.full_frame_interval;
+  int reread_interval = parkloc::localize::PipelineOptions{}.reading.reread_interval_frames;
+  int max_reads = parkloc::localize::PipelineOptions{}.reading.max_reads_per_frame;
+  double sweep_scale = parkloc::localize::PipelineOptions{}.reading.sweep_detection_scale;
+  int search_cameras = parkloc::localize::PipelineOptions{}.reading.search_cameras_per_frame;
   size_t max_frames = 0;
   bool quiet = false;
   std::vector<std::string> inject;
@@ -39,21 +39,21 @@ void run(const RunArgs& a) {
   const io::Sequence sequence(a.sequence, a.calib, a.map, a.odometry);
   for (const auto& w : sequence.warnings()) std::cerr << "parkloc: warning: " << w << "\n";
 
-  localize::RunOptions options;
+  run::RunOptions options;
   options.pipeline = a.paper ? localize::PipelineOptions::paper() : localize::PipelineOptions{};
-  options.pipeline.afm = !a.no_afm;
-  options.pipeline.mcrp = !a.no_mcrp;
-  options.pipeline.mcap = !a.no_mcap;
-  if (a.no_odometry) options.pipeline.use_odometry = false;
-  if (a.no_map_guided) options.pipeline.map_guided = false;
+  options.pipeline.paper_modules.afm = !a.no_afm;
+  options.pipeline.paper_modules.mcrp = !a.no_mcrp;
+  options.pipeline.paper_modules.mcap = !a.no_mcap;
+  if (a.no_odometry) options.pipeline.motion.use_odometry = false;
+  if (a.no_map_guided) options.pipeline.reading.map_guided = false;
   if (!a.paper) {
-    options.pipeline.full_frame_interval = a.full_frame_interval;
-    options.pipeline.reread_interval_frames = a.reread_interval;
-    options.pipeline.max_reads_per_frame = a.max_reads;
-    options.pipeline.sweep_detection_scale = a.sweep_scale;
-    options.pipeline.sweep_places_floor_texts = !a.no_sweep_placement;
-    options.pipeline.search_cameras_per_frame = a.search_cameras;
-    options.pipeline.second_opinions = a.second_opinions;
+    options.pipeline.reading.full_frame_interval = a.full_frame_interval;
+    options.pipeline.reading.reread_interval_frames = a.reread_interval;
+    options.pipeline.reading.max_reads_per_frame = a.max_reads;
+    options.pipeline.reading.sweep_detection_scale = a.sweep_scale;
+    options.pipeline.reading.sweep_places_floor_texts = !a.no_sweep_placement;
+    options.pipeline.reading.search_cameras_per_frame = a.search_cameras;
+    options.pipeline.reading.second_opinions = a.second_opinions;
   }
   // Parking numbers repeat on every level of a garage: the drive's level comes from
   // --level, else from the sequence's meta.json, else the pipeline votes.
@@ -63,8 +63,8 @@ void run(const RunArgs& a) {
   options.out_dir = a.out;
   options.video_path = a.video;
   if (!a.inject.empty()) {
-    options.faults = localize::parseFaults(a.inject);
-    std::cerr << "parkloc: injecting faults:\n" << localize::describeFaults(options.faults) << "\n";
+    options.faults = run::parseFaults(a.inject);
+    std::cerr << "parkloc: injecting faults:\n" << run::describeFaults(options.faults) << "\n";
   }
   if (!a.paper && !a.no_odometry && sequence.odometry().empty())
     std::cerr << "parkloc: warning: no odometry: the filter predicts a random walk\n";
@@ -75,7 +75,7 @@ void run(const RunArgs& a) {
   options.progress = [&](size_t done, size_t total) {
     progress({"run " + sequence.dir(), done, total});
   };
-  const auto s = localize::runSequence(sequence, spotter.get(), options);
+  const auto s = run::runSequence(sequence, spotter.get(), options);
   progress.finish();
 
   std::cout << fmt::format("frames {}  with pose {}  first fix {}\n", s.frames, s.frames_with_pose,
@@ -155,7 +155,7 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--max-frames", args->max_frames, "Process at most N frame sets (0: all)");
   cmd->add_flag("--quiet", args->quiet, "No progress line");
   cmd->add_option("--inject", args->inject,
-                  "Inject faults, e.g. dark:front:3-8,drop:0.1 (see localize/fault_injection.h)")
+                  "Inject faults, e.g. dark:front:3-8,drop:0.1 (see run/fault_injection.h)")
       ->allow_extra_args(false);
   args->spotter.addTo(cmd);
   cmd->callback([args] { run(*args); });

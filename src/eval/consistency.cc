@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "localize/sequence_runner.h"
+#include "run/sequence_runner.h"
 
 namespace parkloc::eval {
 
@@ -88,7 +88,7 @@ ConsistencyResult evaluateConsistency(const std::vector<ReportedFrame>& frames,
       continue;
     }
     seen_pose = true;
-    const auto t = localize::truthAt(truth, f.timestamp);
+    const auto t = run::truthAt(truth, f.timestamp);
     if (!t) {
       ++r.frames_without_truth;
       continue;

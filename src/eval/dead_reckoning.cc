@@ -19,8 +19,8 @@ void DeadReckoning::step(double dt) {
   time_ += dt;
 }
 
-void DeadReckoning::advance(const std::vector<io::OdometrySample>& samples, double until) {
-  for (const io::OdometrySample& s : samples) {
+void DeadReckoning::advance(const std::vector<OdometrySample>& samples, double until) {
+  for (const OdometrySample& s : samples) {
     if (s.timestamp <= time_ || s.timestamp > until) continue;
     if (!std::isfinite(s.speed) || !std::isfinite(s.yaw_rate)) continue;
     if (!have_sample_) {

@@ -16,7 +16,7 @@ class DeadReckoning {
   // Integrates up to `until` with the samples that arrived (sorted, any before the current
   // time are skipped). Each sample's speed and yaw rate hold until the next one; the motion
   // over a step is the exact arc of a constant-speed, constant-turn-rate vehicle.
-  void advance(const std::vector<io::OdometrySample>& samples, double until);
+  void advance(const std::vector<OdometrySample>& samples, double until);
 
   const geometry::Pose2& pose() const { return pose_; }
   double time() const { return time_; }

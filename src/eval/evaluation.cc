@@ -17,7 +17,7 @@
 #include "eval/pose_prediction.h"
 #include "eval/tables.h"
 #include "io/sequence.h"
-#include "localize/oracle_source.h"
+#include "run/oracle_source.h"
 
 namespace parkloc::eval {
 namespace {
@@ -103,7 +103,7 @@ std::vector<VariantSpec> variantSpecs(const EvaluationOptions& o, bool have_spot
                                   s.mcrp ? "on" : "off", s.mcap ? "on" : "off");
       s.source = Source::kSharedFullFrame;
       s.options = localize::PipelineOptions::paper();
-      s.options.afm = s.afm, s.options.mcrp = s.mcrp, s.options.mcap = s.mcap;
+      s.options.paper_modules.afm = s.afm, s.options.paper_modules.mcrp = s.mcrp, s.options.paper_modules.mcap = s.mcap;
       specs.push_back(s);
     }
   }
@@ -152,11 +152,11 @@ std::map<std::string, TrajectoryError> conditionErrors(const VariantTally& t) {
 }
 
 // The odometry samples in (after, until].
-std::vector<io::OdometrySample> odometrySlice(const std::vector<io::OdometrySample>& all,
-                                              double after, double until) {
-  std::vector<io::OdometrySample> out;
+std::vector<OdometrySample> odometrySlice(const std::vector<OdometrySample>& all,
+                                          double after, double until) {
+  std::vector<OdometrySample> out;
   auto it = std::upper_bound(all.begin(), all.end(), after,
-                             [](double t, const io::OdometrySample& s) { return t < s.timestamp; });
+                             [](double t, const OdometrySample& s) { return t < s.timestamp; });
   for (; it != all.end() && it->timestamp <= until; ++it) out.push_back(*it);
   return out;
 }
@@ -265,7 +265,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
   // could only be unconfirmed there, and its reading time would be timed for nothing).
   const bool shared_second_opinions =
       std::any_of(tallies.begin(), tallies.end(), [](const VariantTally& t) {
-        return t.spec.source == Source::kSharedFullFrame && t.spec.options.second_opinions;
+        return t.spec.source == Source::kSharedFullFrame && t.spec.options.reading.second_opinions;
       });
   OcrEvaluator ocr_evaluator(options.ocr_metrics);
   // Without the shared full-frame pass, the OCR figures come from the full-frame spotting
@@ -319,7 +319,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     std::vector<std::set<std::string>> tags_by_frame;
     for (size_t i = 0; i < frames; ++i) {
       const double t = seq.timestamps()[i];
-      const std::vector<io::OdometrySample> odometry =
+      const std::vector<OdometrySample> odometry =
           odometrySlice(seq.odometry(), previous_time, t);
       previous_time = t;
 
@@ -382,7 +382,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
               in.instances = c.full_frame;
               break;
             case Source::kOracle:
-              in.instances = c.labels ? localize::oracleInstances(*c.labels)
+              in.instances = c.labels ? run::oracleInstances(*c.labels)
                                       : std::vector<ocr::TextInstance>{};
               break;
             case Source::kOdometry:

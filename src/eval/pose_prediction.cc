@@ -8,7 +8,7 @@
 namespace parkloc::eval {
 
 PosePrediction::PosePrediction(std::vector<io::StampedPose> estimates,
-                               std::vector<io::OdometrySample> odometry,
+                               std::vector<OdometrySample> odometry,
                                const PosePredictionOptions& options)
     : estimates_(std::move(estimates)), odometry_(std::move(odometry)), options_(options) {
   std::stable_sort(estimates_.begin(), estimates_.end(),

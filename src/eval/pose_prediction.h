@@ -23,7 +23,7 @@ struct PosePredictionOptions {
 class PosePrediction {
  public:
   // `estimates`: a localization run's poses (TUM, sorted by time); `odometry`: the drive's.
-  PosePrediction(std::vector<io::StampedPose> estimates, std::vector<io::OdometrySample> odometry,
+  PosePrediction(std::vector<io::StampedPose> estimates, std::vector<OdometrySample> odometry,
                  const PosePredictionOptions& options = {});
 
   // The map_from_vehicle pose predicted for `timestamp` from the last estimate before it;
@@ -32,7 +32,7 @@ class PosePrediction {
 
  private:
   std::vector<io::StampedPose> estimates_;
-  std::vector<io::OdometrySample> odometry_;
+  std::vector<OdometrySample> odometry_;
   PosePredictionOptions options_;
 };
 

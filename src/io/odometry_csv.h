@@ -1,16 +1,13 @@
 #pragma once
 // Wheel odometry as CSV with header "timestamp,speed,yaw_rate": seconds, metres per second
-// (forward positive), radians per second (counter-clockwise positive).
+// (forward positive), radians per second (counter-clockwise positive); parkloc::OdometrySample
+// (common/odometry_sample.h) in memory.
 #include <string>
 #include <vector>
 
-namespace parkloc::io {
+#include "common/odometry_sample.h"
 
-struct OdometrySample {
-  double timestamp = 0.0;
-  double speed = 0.0;
-  double yaw_rate = 0.0;
-};
+namespace parkloc::io {
 
 // Throws InputError naming the file and line for malformed rows, NaN values or timestamps
 // out of order.

@@ -21,4 +21,11 @@ struct LandmarkObservation {
   bool use_corners = true;
 };
 
+// What a text's polygon measures in the solver. Corners: all four corners (exact polygons,
+// e.g. ground-truth labels). Centre: only the polygon's centre (detector boxes are padded
+// and cannot follow the shear of floor text seen at a grazing angle, but they stay centred
+// on the ink). Auto: corners for instances that come with the frame (oracle), the centre
+// for those of the injected spotter.
+enum class PolygonModel { kAuto, kCorners, kCentre };
+
 }  // namespace parkloc::localize

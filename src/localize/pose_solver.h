@@ -28,7 +28,7 @@ struct SolverOptions {
   // Hypothesis scoring: an observation is an inlier when its mean corner error is below.
   double inlier_threshold_px = 10.0;
   // An outlier whose polygon centre (not corners) lies within this of its prediction
-  // takes part with its centre only (0: off; on the first real-OCR drive it cost accuracy).
+  // takes part with its centre only (0: off; on a real-OCR drive it cost accuracy).
   double centre_fallback_px = 0.0;
   int max_hypotheses = 8;  // single-text hypotheses tried by solvePose (the largest texts)
 };

@@ -31,7 +31,7 @@ std::vector<ocr::RegionOfInterest> predictRegions(const geometry::RigCamera& cam
                                                   const RoiOptions& options = {});
 
 // The same regions with the landmark id and the predicted text's size, for the per-frame
-// region budget (added later; additive).
+// region budget (region_budget.h).
 std::vector<RegionCandidate> predictRegionCandidates(
     const geometry::RigCamera& camera, const std::vector<const map::Landmark*>& nearby,
     const FloorHeights& floors, const geometry::Pose2& pose, const Eigen::Matrix3d& covariance,

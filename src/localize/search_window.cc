@@ -16,12 +16,12 @@ geometry::Pose2 arc(double speed, double yaw_rate, double dt) {
 
 }  // namespace
 
-std::optional<geometry::Pose2> integrateOdometry(const std::optional<io::OdometrySample>& held,
-                                                 const std::vector<io::OdometrySample>& samples,
+std::optional<geometry::Pose2> integrateOdometry(const std::optional<OdometrySample>& held,
+                                                 const std::vector<OdometrySample>& samples,
                                                  double t0, double t1) {
   if (!held || !(t1 >= t0)) return std::nullopt;
   geometry::Pose2 pose;
-  io::OdometrySample current = *held;
+  OdometrySample current = *held;
   double t = t0;
   for (const auto& s : samples) {
     if (s.timestamp <= t) {
@@ -36,6 +36,12 @@ std::optional<geometry::Pose2> integrateOdometry(const std::optional<io::Odometr
   }
   if (t < t1) pose = pose * arc(current.speed, current.yaw_rate, t1 - t);
   return pose;
+}
+
+size_t searchWindowFrames(int cameras_per_frame_set, size_t rig_cameras) {
+  const int per = cameras_per_frame_set;
+  if (per <= 0 || static_cast<size_t>(per) >= rig_cameras) return 0;
+  return (rig_cameras + static_cast<size_t>(per) - 1) / static_cast<size_t>(per) - 1;
 }
 
 void SearchWindow::advance(const std::optional<geometry::Pose2>& motion) {

@@ -9,9 +9,9 @@
 #include <optional>
 #include <vector>
 
+#include "common/odometry_sample.h"
 #include "geometry/pose.h"
 #include "geometry/rig.h"
-#include "io/odometry_csv.h"
 #include "localize/landmark_observation.h"
 
 namespace parkloc::localize {
@@ -20,9 +20,14 @@ namespace parkloc::localize {
 // wheel odometry held piecewise constant: `held` applies from t0 until the first of
 // `samples` (ascending, finite), each sample from its timestamp on. nullopt without
 // odometry (no `held` sample), or when t1 < t0.
-std::optional<geometry::Pose2> integrateOdometry(const std::optional<io::OdometrySample>& held,
-                                                 const std::vector<io::OdometrySample>& samples,
+std::optional<geometry::Pose2> integrateOdometry(const std::optional<OdometrySample>& held,
+                                                 const std::vector<OdometrySample>& samples,
                                                  double t0, double t1);
+
+// The frame sets a search window spans when `cameras_per_frame_set` of the rig's cameras are
+// spotted per frame set in turn: one turn of the others (0 when every camera is spotted every
+// frame set, or when cameras_per_frame_set <= 0, which means all of them).
+size_t searchWindowFrames(int cameras_per_frame_set, size_t rig_cameras);
 
 class SearchWindow {
  public:
@@ -48,8 +53,7 @@ class SearchWindow {
     std::vector<LandmarkObservation> observations;
     size_t current = 0;  // the first `current` observations are this frame set's
   };
-  Combined combine(const geometry::Rig& rig,
-                   const std::vector<LandmarkObservation>& current) const;
+  Combined combine(const geometry::Rig& rig, const std::vector<LandmarkObservation>& current) const;
 
  private:
   struct Frame {

@@ -275,7 +275,7 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
         std::chrono::duration<double>(std::chrono::steady_clock::now() - render_start).count();
     const double t_end = (n - 1) / scenario.frame_rate;
     io::saveTum(poses, (dir / "poses.tum").string());
-    std::vector<io::OdometrySample> odo =
+    std::vector<OdometrySample> odo =
         simulateOdometry(drive, scenario.odometry_rate, seed ^ 0x0d0e7ULL);
     while (!odo.empty() && odo.back().timestamp > t_end + 1e-9) odo.pop_back();
     io::saveOdometry(odo, (dir / "odometry.csv").string());

@@ -220,18 +220,18 @@ Drive planDrive(const Garage& g, int level, const DriveSpec& spec, uint64_t seed
   return Drive(std::move(states));
 }
 
-std::vector<io::OdometrySample> simulateOdometry(const Drive& drive, double rate, uint64_t seed,
+std::vector<OdometrySample> simulateOdometry(const Drive& drive, double rate, uint64_t seed,
                                                  const OdometryNoise& noise) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
   const double scale = 1.0 + noise.speed_scale_sigma * gauss(rng);
   const double bias = noise.yaw_rate_bias_sigma * gauss(rng);
-  std::vector<io::OdometrySample> out;
+  std::vector<OdometrySample> out;
   const int n = static_cast<int>(std::floor(drive.duration() * rate + 1e-9)) + 1;
   for (int k = 0; k < n; ++k) {
     const double t = k / rate;
     const DriveState s = drive.at(t);
-    io::OdometrySample o;
+    OdometrySample o;
     o.timestamp = t;
     o.speed = std::abs(s.speed) < 1e-3 ? 0.0 : scale * s.speed + noise.speed_sigma * gauss(rng);
     o.yaw_rate = s.yaw_rate + bias + noise.yaw_rate_sigma * gauss(rng);

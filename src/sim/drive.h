@@ -43,7 +43,7 @@ struct OdometryNoise {
 
 // Wheel odometry sampled at `rate` Hz from the drive, with white noise and a per-drive
 // constant speed scale error and yaw-rate bias. Speed reads exactly 0 at standstill.
-std::vector<io::OdometrySample> simulateOdometry(const Drive& drive, double rate, uint64_t seed,
+std::vector<OdometrySample> simulateOdometry(const Drive& drive, double rate, uint64_t seed,
                                                  const OdometryNoise& noise = {});
 
 }  // namespace parkloc::sim

@@ -7,9 +7,9 @@
 namespace parkloc::eval {
 namespace {
 
-std::vector<io::OdometrySample> constant(double speed, double yaw_rate, double t0, double t1,
+std::vector<OdometrySample> constant(double speed, double yaw_rate, double t0, double t1,
                                          double rate) {
-  std::vector<io::OdometrySample> out;
+  std::vector<OdometrySample> out;
   for (double t = t0; t <= t1 + 1e-9; t += 1.0 / rate) out.push_back({t, speed, yaw_rate});
   return out;
 }

@@ -36,7 +36,7 @@ std::string writeSequence(const std::string& root, const std::string& name) {
   l.height = 0.45;
   io::saveMap(map::HdMap({l}, "test"), (dir / "map.geojson").string());
   std::vector<io::StampedPose> poses;
-  std::vector<io::OdometrySample> odometry;
+  std::vector<OdometrySample> odometry;
   for (int i = 0; i <= 200; ++i) {
     const double t = i * 0.02;
     odometry.push_back({t, 1.0, 0.2});

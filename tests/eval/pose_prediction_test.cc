@@ -10,8 +10,8 @@ namespace {
 io::StampedPose stamped(double t, const geometry::Pose2& pose) { return {t, pose.toRigid3()}; }
 
 // 2 m/s straight ahead, samples at 50 Hz over 3 s.
-std::vector<io::OdometrySample> straightAhead() {
-  std::vector<io::OdometrySample> out;
+std::vector<OdometrySample> straightAhead() {
+  std::vector<OdometrySample> out;
   for (int i = 0; i <= 150; ++i) out.push_back({i / 50.0, 2.0, 0.0});
   return out;
 }

@@ -129,11 +129,11 @@ TEST(RegionBudget, PipelineKeepsTheBudgetSpreadsFullFramesAndRotatesCameras) {
   const map::HdMap map = testing::aisleMap();
   CountingSpotter spotter(rig, map);
   PipelineOptions options;
-  options.max_regions_per_frame = 2;
-  options.max_regions_with_full_frame = 1;
-  options.full_frame_round_robin = true;
-  options.full_frame_interval = 8;
-  options.search_cameras_per_frame = 0;  // the first frame spots every camera
+  options.reading.max_regions_per_frame = 2;
+  options.reading.max_regions_with_full_frame = 1;
+  options.reading.full_frame_round_robin = true;
+  options.reading.full_frame_interval = 8;
+  options.reading.search_cameras_per_frame = 0;  // the first frame spots every camera
   Pipeline pipeline(rig, map, options, &spotter);
   std::set<std::string> cameras_with_regions, cameras_on_full_frame;
   int tracked = 0;
@@ -171,7 +171,7 @@ TEST(RegionBudget, SearchSpotsOneCameraPerFrameInTurnUntilTheFirstFix) {
   CountingSpotter spotter(rig, map);
   spotter.only_camera = "left";  // the only camera that sees text (the others are dark)
   PipelineOptions options;
-  options.search_cameras_per_frame = 1;
+  options.reading.search_cameras_per_frame = 1;
   Pipeline pipeline(rig, map, options, &spotter);
   std::vector<std::string> searched;
   for (int k = 0; k < 8; ++k) {

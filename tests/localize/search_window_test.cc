@@ -10,8 +10,8 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-io::OdometrySample sample(double t, double speed, double yaw_rate) {
-  io::OdometrySample s;
+OdometrySample sample(double t, double speed, double yaw_rate) {
+  OdometrySample s;
   s.timestamp = t;
   s.speed = speed;
   s.yaw_rate = yaw_rate;
@@ -77,8 +77,8 @@ TEST(SearchWindow, TextsSeenEarlierSolveTheCurrentPoseExactly) {
   // The earlier texts alone already give the current pose: they were carried correctly.
   std::vector<LandmarkObservation> earlier(combined.observations.begin() + combined.current,
                                            combined.observations.end());
-  for (const auto& result : {solvePose(combined.rig, combined.observations),
-                             solvePose(combined.rig, earlier)}) {
+  for (const auto& result :
+       {solvePose(combined.rig, combined.observations), solvePose(combined.rig, earlier)}) {
     ASSERT_TRUE(result.ok) << result.failure;
     EXPECT_LT((result.pose.translation() - now.translation()).norm(), 1e-3);
     EXPECT_LT(std::abs(geometry::wrapAngle(result.pose.yaw - now.yaw)), 0.01 * kDeg);

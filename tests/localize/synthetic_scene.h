@@ -140,7 +140,7 @@ inline FrameInput placeholderFrame(const geometry::Rig& rig, double t, double sp
   in.timestamp = t;
   for (const auto& camera : rig.cameras)
     in.cameras.push_back({camera.name, cv::Mat(4, 4, CV_8UC3), {}});
-  io::OdometrySample odo;
+  OdometrySample odo;
   odo.timestamp = t;
   odo.speed = speed;
   in.odometry.push_back(odo);

@@ -51,9 +51,9 @@ TEST(TrackedReading, ReadsAFewTextsPerFrameFitsTheRestAndKeepsThePose) {
   const map::HdMap map = testing::aisleMap();
   RecordingSpotter spotter(map);
   PipelineOptions options;
-  options.reread_interval_frames = 10;
-  options.max_reads_per_frame = 2;
-  options.full_frame_interval = 1000;  // only the first frame on the full frame
+  options.reading.reread_interval_frames = 10;
+  options.reading.max_reads_per_frame = 2;
+  options.reading.full_frame_interval = 1000;  // only the first frame on the full frame
   Pipeline pipeline(rig, map, options, &spotter);
   std::map<std::string, int> last_read;
   int fitted_total = 0;
@@ -90,8 +90,8 @@ TEST(TrackedReading, TheTrackingSweepGetsTheFloorTextsPlacedAroundThePose) {
   for (const bool place : {true, false}) {
     RecordingSpotter spotter(map);
     PipelineOptions options;
-    options.full_frame_interval = 8;
-    options.sweep_places_floor_texts = place;
+    options.reading.full_frame_interval = 8;
+    options.reading.sweep_places_floor_texts = place;
     Pipeline pipeline(rig, map, options, &spotter);
     int sweeps = 0;
     for (int k = 0; k < 20; ++k) {
@@ -131,8 +131,8 @@ TEST(TrackedReading, OffReadsEveryRegion) {
   const map::HdMap map = testing::aisleMap();
   RecordingSpotter spotter(map);
   PipelineOptions options;
-  options.reread_interval_frames = 0;
-  options.full_frame_interval = 1000;
+  options.reading.reread_interval_frames = 0;
+  options.reading.full_frame_interval = 1000;
   Pipeline pipeline(rig, map, options, &spotter);
   for (int k = 0; k < 10; ++k) {
     spotter.pose = geometry::Pose2(0.1 * k, 0.1, 0.0);

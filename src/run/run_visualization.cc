@@ -1,20 +1,20 @@
-#include "localize/run_visualization.h"
+#include "run/run_visualization.h"
 
 #include <fmt/format.h>
 #include <Eigen/Eigenvalues>
 #include <opencv2/imgproc.hpp>
 
-namespace parkloc::localize {
+namespace parkloc::run {
 namespace {
 
 constexpr int kViewWidth = 640;
 constexpr int kViewHeight = 400;
 
-cv::Scalar verdictColour(AssociationVerdict v) {
+cv::Scalar verdictColour(localize::AssociationVerdict v) {
   switch (v) {
-    case AssociationVerdict::kAccepted:
+    case localize::AssociationVerdict::kAccepted:
       return {60, 220, 60};
-    case AssociationVerdict::kWrongClass:
+    case localize::AssociationVerdict::kWrongClass:
       return {200, 200, 200};
     default:
       return {40, 40, 230};
@@ -22,7 +22,7 @@ cv::Scalar verdictColour(AssociationVerdict v) {
 }
 
 void drawCamera(cv::Mat& canvas, const cv::Rect& where, const cv::Mat& image,
-                const CameraResult& camera, const FrameResult& result) {
+                const localize::CameraResult& camera, const localize::FrameResult& result) {
   cv::Mat view = canvas(where);
   double scale = 1.0;
   if (image.empty()) {
@@ -38,7 +38,7 @@ void drawCamera(cv::Mat& canvas, const cv::Rect& where, const cv::Mat& image,
   if (image.empty()) scale = static_cast<double>(where.width) / 1280.0;
   for (size_t i = 0; i < camera.instances.size(); ++i) {
     const auto& t = camera.instances[i];
-    AssociationVerdict verdict = AssociationVerdict::kWrongClass;
+    localize::AssociationVerdict verdict = localize::AssociationVerdict::kWrongClass;
     for (const auto& a : result.associations)
       if (a.camera == camera.camera && a.instance_index == static_cast<int>(i)) verdict = a.verdict;
     std::vector<cv::Point> polygon;
@@ -48,7 +48,7 @@ void drawCamera(cv::Mat& canvas, const cv::Rect& where, const cv::Mat& image,
     cv::polylines(view, polygon, true, colour, 2, cv::LINE_AA);
     cv::circle(view, polygon[0], 3, colour, cv::FILLED);  // reading order starts here
     std::string label = t.text;
-    if (verdict != AssociationVerdict::kAccepted) label += " (" + toString(verdict) + ")";
+    if (verdict != localize::AssociationVerdict::kAccepted) label += " (" + toString(verdict) + ")";
     cv::putText(view, label, polygon[0] + cv::Point(0, -4), cv::FONT_HERSHEY_SIMPLEX, 0.45, colour,
                 1, cv::LINE_AA);
   }
@@ -111,7 +111,7 @@ BirdsEyeView BirdsEyeView::fitting(const map::HdMap& map, const std::vector<geom
 
 cv::Mat drawRunFrame(const VisualizationInput& input, const map::HdMap& map,
                      const BirdsEyeView& bev) {
-  const FrameResult& result = *input.result;
+  const localize::FrameResult& result = *input.result;
   cv::Mat canvas(2 * kViewHeight, 2 * kViewWidth + bev.size_px, CV_8UC3, cv::Scalar(30, 30, 30));
   for (size_t c = 0; c < result.cameras.size() && c < 4; ++c) {
     const cv::Rect where(static_cast<int>(c % 2) * kViewWidth,
@@ -131,7 +131,7 @@ cv::Mat drawRunFrame(const VisualizationInput& input, const map::HdMap& map,
     cv::polylines(view, polygon, true, colour, 1, cv::LINE_AA);
   }
   for (const auto& a : result.associations) {
-    if (a.verdict != AssociationVerdict::kAccepted || a.landmark_id.empty()) continue;
+    if (a.verdict != localize::AssociationVerdict::kAccepted || a.landmark_id.empty()) continue;
     if (const auto* l = map.findById(a.landmark_id))
       cv::circle(view, bev.toPixel(l->position.head<2>()), 5, {60, 200, 60}, 2, cv::LINE_AA);
   }
@@ -164,4 +164,4 @@ cv::Mat drawRunFrame(const VisualizationInput& input, const map::HdMap& map,
   return canvas;
 }
 
-}  // namespace parkloc::localize
+}  // namespace parkloc::run

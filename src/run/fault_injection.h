@@ -31,7 +31,7 @@
 #include "localize/pipeline.h"
 #include "ocr/text_spotter.h"
 
-namespace parkloc::localize {
+namespace parkloc::run {
 
 struct TimeRange {
   double begin = 0.0;
@@ -85,7 +85,7 @@ void checkFaultCameras(const InputFaults& faults, const geometry::Rig& rig);
 std::vector<bool> kidnapSkips(const std::vector<Kidnap>& kidnaps,
                               const std::vector<double>& timestamps,
                               const std::vector<io::StampedPose>& truth,
-                              const std::vector<io::OdometrySample>& odometry);
+                              const std::vector<OdometrySample>& odometry);
 
 // A spotter that reads REAL as FAKE (the spoofed sign, for runs with real OCR); it notes
 // each substitution. `inner` must outlive it.
@@ -119,7 +119,7 @@ class FaultInjector {
   // `timestamps`, `truth` and `odometry` of the whole drive decide the kidnap skips.
   FaultInjector(InputFaults faults, const std::vector<double>& timestamps,
                 const std::vector<io::StampedPose>& truth,
-                const std::vector<io::OdometrySample>& odometry);
+                const std::vector<OdometrySample>& odometry);
 
   bool active() const { return !faults_.empty(); }
   const InputFaults& faults() const { return faults_; }
@@ -128,7 +128,7 @@ class FaultInjector {
   // odometry up to the next processed frame set is withheld.
   bool skip(size_t index);
   // Breaks one frame set's inputs; says what it did in `warnings` ("fault: ...").
-  void apply(size_t index, FrameInput& frame, std::vector<std::string>& warnings);
+  void apply(size_t index, localize::FrameInput& frame, std::vector<std::string>& warnings);
   // The spotter to hand the pipeline: `inner` itself, or a SpoofingSpotter around it.
   ocr::TextSpotter* wrapSpotter(ocr::TextSpotter* inner);
   // Notes of the wrapped spotter since the last call.
@@ -139,9 +139,9 @@ class FaultInjector {
   std::vector<bool> skips_;
   bool withhold_next_odometry_ = false;
   size_t skipped_in_a_row_ = 0;
-  std::map<std::string, CameraInput> last_seen_;  // per camera, the latest unbroken input
-  std::map<std::string, CameraInput> frozen_;     // per camera, the input it repeats
+  std::map<std::string, localize::CameraInput> last_seen_;  // per camera, the latest unbroken input
+  std::map<std::string, localize::CameraInput> frozen_;     // per camera, the input it repeats
   std::unique_ptr<SpoofingSpotter> spoofing_;
 };
 
-}  // namespace parkloc::localize
+}  // namespace parkloc::run

@@ -1,6 +1,6 @@
-#include "localize/oracle_source.h"
+#include "run/oracle_source.h"
 
-namespace parkloc::localize {
+namespace parkloc::run {
 
 std::vector<ocr::TextInstance> oracleInstances(const io::ImageLabels& labels,
                                                const OracleOptions& options) {
@@ -23,4 +23,4 @@ std::vector<ocr::TextInstance> oracleInstances(const io::ImageLabels& labels,
   return out;
 }
 
-}  // namespace parkloc::localize
+}  // namespace parkloc::run

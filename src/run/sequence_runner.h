@@ -8,14 +8,14 @@
 #include <vector>
 
 #include "io/sequence.h"
-#include "localize/fault_injection.h"
 #include "localize/pipeline.h"
 #include "ocr/text_spotter.h"
+#include "run/fault_injection.h"
 
-namespace parkloc::localize {
+namespace parkloc::run {
 
 struct RunOptions {
-  PipelineOptions pipeline;
+  localize::PipelineOptions pipeline;
   bool oracle = false;     // instances from the ground-truth labels instead of a spotter
   size_t max_frames = 0;   // 0: all frame sets
   std::string out_dir;     // receives trajectory.tum and frames.jsonl (created)
@@ -52,11 +52,11 @@ struct RunSummary {
 std::optional<geometry::Pose2> truthAt(const std::vector<io::StampedPose>& truth, double t);
 
 // The odometry samples with timestamp in (after, until].
-std::vector<io::OdometrySample> odometryBetween(const std::vector<io::OdometrySample>& all,
-                                                double after, double until);
+std::vector<OdometrySample> odometryBetween(const std::vector<OdometrySample>& all, double after,
+                                            double until);
 
 // Throws InputError (oracle without labels, spotter missing) and IoError (outputs).
 RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
                        const RunOptions& options);
 
-}  // namespace parkloc::localize
+}  // namespace parkloc::run

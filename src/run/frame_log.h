@@ -5,9 +5,9 @@
 
 #include "localize/pipeline.h"
 
-namespace parkloc::localize {
+namespace parkloc::run {
 
 // Compact JSON object on one line (no trailing newline).
-std::string frameResultToJson(const FrameResult& result);
+std::string frameResultToJson(const localize::FrameResult& result);
 
-}  // namespace parkloc::localize
+}  // namespace parkloc::run

@@ -1,10 +1,10 @@
-#include "localize/fault_injection.h"
+#include "run/fault_injection.h"
 
 #include <gtest/gtest.h>
 
 #include "common/error.h"
 
-namespace parkloc::localize {
+namespace parkloc::run {
 namespace {
 
 ocr::TextInstance instance(const std::string& text) {
@@ -16,11 +16,11 @@ ocr::TextInstance instance(const std::string& text) {
 
 // A frame set of two cameras with a grey image and one oracle instance each, and five
 // odometry samples in the 0.1 s before `t`.
-FrameInput frame(double t, const std::string& text = "B1-112") {
-  FrameInput f;
+localize::FrameInput frame(double t, const std::string& text = "B1-112") {
+  localize::FrameInput f;
   f.timestamp = t;
   for (const char* name : {"front", "rear"}) {
-    CameraInput c;
+    localize::CameraInput c;
     c.camera = name;
     c.image = cv::Mat(40, 60, CV_8UC3, cv::Scalar(100, 120, 140));
     c.instances = std::vector<ocr::TextInstance>{instance(text)};
@@ -277,7 +277,7 @@ TEST(FaultInjection, KidnapSkipsUntilTheTruthHasMovedAndWithholdsOdometry) {
   for (size_t i = 0; i < skips.size(); ++i) EXPECT_EQ(skips[i], i >= 12 && i < 31) << i;
 
   // Without truth, the odometry path length decides.
-  std::vector<io::OdometrySample> odometry;
+  std::vector<OdometrySample> odometry;
   for (int i = 1; i <= 600; ++i) odometry.push_back({0.05 * i, 2.0, 0.0});
   const auto by_odometry = kidnapSkips({Kidnap{6.0, 19.9}}, timestamps, {}, odometry);
   EXPECT_EQ(by_odometry, skips);
@@ -307,4 +307,4 @@ TEST(FaultInjection, KidnapBeyondTheDriveStopsAtTheFarthestFrame) {
 }
 
 }  // namespace
-}  // namespace parkloc::localize
+}  // namespace parkloc::run

@@ -6,7 +6,7 @@
 #include "io/labels.h"
 #include "ocr/text_spotter.h"
 
-namespace parkloc::localize {
+namespace parkloc::run {
 
 struct OracleOptions {
   // Labels this occluded are left out, as a spotter could not read them (the dataset marks
@@ -19,4 +19,4 @@ struct OracleOptions {
 std::vector<ocr::TextInstance> oracleInstances(const io::ImageLabels& labels,
                                                const OracleOptions& options = {});
 
-}  // namespace parkloc::localize
+}  // namespace parkloc::run

@@ -1,4 +1,4 @@
-#include "localize/sequence_runner.h"
+#include "run/sequence_runner.h"
 
 #include <fmt/format.h>
 
@@ -9,11 +9,11 @@
 
 #include "common/error.h"
 #include "io/tum.h"
-#include "localize/frame_log.h"
-#include "localize/oracle_source.h"
-#include "localize/run_visualization.h"
+#include "run/frame_log.h"
+#include "run/oracle_source.h"
+#include "run/run_visualization.h"
 
-namespace parkloc::localize {
+namespace parkloc::run {
 namespace fs = std::filesystem;
 namespace {
 
@@ -45,9 +45,9 @@ std::optional<geometry::Pose2> truthAt(const std::vector<io::StampedPose>& truth
                          a.yaw + w * geometry::wrapAngle(b.yaw - a.yaw));
 }
 
-std::vector<io::OdometrySample> odometryBetween(const std::vector<io::OdometrySample>& all,
-                                                double after, double until) {
-  std::vector<io::OdometrySample> out;
+std::vector<OdometrySample> odometryBetween(const std::vector<OdometrySample>& all, double after,
+                                            double until) {
+  std::vector<OdometrySample> out;
   for (const auto& s : all)
     if (s.timestamp > after && s.timestamp <= until) out.push_back(s);
   return out;
@@ -70,8 +70,8 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
   checkFaultCameras(options.faults, sequence.rig());
   FaultInjector injector(options.faults, sequence.timestamps(), sequence.groundTruth(),
                          sequence.odometry());
-  Pipeline pipeline(sequence.rig(), sequence.map(), options.pipeline,
-                    injector.wrapSpotter(spotter));
+  localize::Pipeline pipeline(sequence.rig(), sequence.map(), options.pipeline,
+                              injector.wrapSpotter(spotter));
   const auto& timestamps = sequence.timestamps();
   size_t count = timestamps.size();
   if (options.max_frames > 0) count = std::min(count, options.max_frames);
@@ -106,14 +106,14 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
       ++summary.frames_skipped_by_faults;
       continue;
     }
-    FrameInput input;
+    localize::FrameInput input;
     input.timestamp = t;
     input.odometry = odometryBetween(sequence.odometry(), previous_time, t);
     previous_time = t;
     std::vector<std::string> load_warnings;
     std::vector<cv::Mat> images;
     for (const auto& camera : sequence.rig().cameras) {
-      CameraInput c;
+      localize::CameraInput c;
       c.camera = camera.name;
       if (need_images) {
         std::string why;
@@ -131,7 +131,7 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
       if (!c.image.empty() || c.instances) input.cameras.push_back(std::move(c));
     }
     injector.apply(i, input, load_warnings);
-    FrameResult result = pipeline.process(input);
+    localize::FrameResult result = pipeline.process(input);
     result.warnings.insert(result.warnings.begin(), load_warnings.begin(), load_warnings.end());
     for (auto& note : injector.takeSpotterNotes()) result.warnings.push_back(std::move(note));
     frames_log << frameResultToJson(result) << '\n';
@@ -190,4 +190,4 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
   return summary;
 }
 
-}  // namespace parkloc::localize
+}  // namespace parkloc::run

@@ -1,8 +1,8 @@
-#include "localize/frame_log.h"
+#include "run/frame_log.h"
 
 #include <nlohmann/json.hpp>
 
-namespace parkloc::localize {
+namespace parkloc::run {
 namespace {
 
 nlohmann::json poseJson(const geometry::Pose2& p) {
@@ -17,7 +17,7 @@ nlohmann::json matrixJson(const Eigen::Matrix3d& m) {
 
 }  // namespace
 
-std::string frameResultToJson(const FrameResult& r) {
+std::string frameResultToJson(const localize::FrameResult& r) {
   nlohmann::json j;
   j["timestamp"] = r.timestamp;
   j["status"] = toString(r.status);
@@ -78,4 +78,4 @@ std::string frameResultToJson(const FrameResult& r) {
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-}  // namespace parkloc::localize
+}  // namespace parkloc::run

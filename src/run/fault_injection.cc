@@ -1,4 +1,4 @@
-#include "localize/fault_injection.h"
+#include "run/fault_injection.h"
 
 #include <fmt/format.h>
 
@@ -10,7 +10,7 @@
 #include "common/error.h"
 #include "geometry/pose.h"
 
-namespace parkloc::localize {
+namespace parkloc::run {
 namespace {
 
 std::vector<std::string> split(const std::string& text, char separator) {
@@ -201,7 +201,7 @@ void checkFaultCameras(const InputFaults& faults, const geometry::Rig& rig) {
 std::vector<bool> kidnapSkips(const std::vector<Kidnap>& kidnaps,
                               const std::vector<double>& timestamps,
                               const std::vector<io::StampedPose>& truth,
-                              const std::vector<io::OdometrySample>& odometry) {
+                              const std::vector<OdometrySample>& odometry) {
   const size_t n = timestamps.size();
   std::vector<bool> skip(n, false);
   if (kidnaps.empty() || n == 0) return skip;
@@ -306,7 +306,7 @@ cv::Mat corruptJpeg(const cv::Mat& image, std::mt19937_64& rng) {
 
 FaultInjector::FaultInjector(InputFaults faults, const std::vector<double>& timestamps,
                              const std::vector<io::StampedPose>& truth,
-                             const std::vector<io::OdometrySample>& odometry)
+                             const std::vector<OdometrySample>& odometry)
     : faults_(std::move(faults)),
       skips_(kidnapSkips(faults_.kidnaps, timestamps, truth, odometry)) {}
 
@@ -329,7 +329,8 @@ std::vector<std::string> FaultInjector::takeSpotterNotes() {
   return spoofing_ ? spoofing_->takeNotes() : std::vector<std::string>{};
 }
 
-void FaultInjector::apply(size_t index, FrameInput& frame, std::vector<std::string>& warnings) {
+void FaultInjector::apply(size_t index, localize::FrameInput& frame,
+                          std::vector<std::string>& warnings) {
   const double t = frame.timestamp;
 
   // Odometry: kidnap (withheld since the last processed frame set), dropouts, bias.
@@ -343,7 +344,7 @@ void FaultInjector::apply(size_t index, FrameInput& frame, std::vector<std::stri
   }
   const size_t before = frame.odometry.size();
   frame.odometry.erase(std::remove_if(frame.odometry.begin(), frame.odometry.end(),
-                                      [&](const io::OdometrySample& s) {
+                                      [&](const OdometrySample& s) {
                                         for (const auto& r : faults_.odometry_dropouts)
                                           if (r.contains(s.timestamp)) return true;
                                         return false;
@@ -367,9 +368,9 @@ void FaultInjector::apply(size_t index, FrameInput& frame, std::vector<std::stri
     return;
   }
 
-  std::vector<CameraInput> kept;
+  std::vector<localize::CameraInput> kept;
   for (size_t ci = 0; ci < frame.cameras.size(); ++ci) {
-    CameraInput c = std::move(frame.cameras[ci]);
+    localize::CameraInput c = std::move(frame.cameras[ci]);
     const auto& name = c.camera;
     if (std::find(faults_.missing_cameras.begin(), faults_.missing_cameras.end(), name) !=
         faults_.missing_cameras.end()) {
@@ -381,7 +382,7 @@ void FaultInjector::apply(size_t index, FrameInput& frame, std::vector<std::stri
       if (f.camera == name && f.range.contains(t)) frozen_now = true;
     if (frozen_now) {
       if (!frozen_.count(name)) frozen_[name] = last_seen_.count(name) ? last_seen_[name] : c;
-      const CameraInput& repeat = frozen_[name];
+      const localize::CameraInput& repeat = frozen_[name];
       c.image = repeat.image;
       c.instances = repeat.instances;
       warnings.push_back(fmt::format("fault: camera '{}' frozen (repeats its image)", name));
@@ -414,4 +415,4 @@ void FaultInjector::apply(size_t index, FrameInput& frame, std::vector<std::stri
   frame.cameras = std::move(kept);
 }
 
-}  // namespace parkloc::localize
+}  // namespace parkloc::run

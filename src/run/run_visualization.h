@@ -11,7 +11,7 @@
 #include "localize/pipeline.h"
 #include "map/hd_map.h"
 
-namespace parkloc::localize {
+namespace parkloc::run {
 
 struct BirdsEyeView {
   cv::Rect2d bounds;  // map area shown (metres)
@@ -23,7 +23,7 @@ struct BirdsEyeView {
 };
 
 struct VisualizationInput {
-  const FrameResult* result = nullptr;
+  const localize::FrameResult* result = nullptr;
   // Camera images in the order of result->cameras (empty Mat: drawn grey).
   std::vector<cv::Mat> images;
   std::vector<geometry::Pose2> estimated_so_far;
@@ -35,4 +35,4 @@ struct VisualizationInput {
 cv::Mat drawRunFrame(const VisualizationInput& input, const map::HdMap& map,
                      const BirdsEyeView& view);
 
-}  // namespace parkloc::localize
+}  // namespace parkloc::run

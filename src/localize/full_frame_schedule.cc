@@ -1,0 +1,39 @@
+#include <algorithm>
+
+#include "localize/read_planning.h"
+
+namespace parkloc::localize {
+
+FullFrameChoice FullFrameSchedule::next(size_t n_cameras, bool tracking, bool initialised) {
+  FullFrameChoice choice;
+  const int interval = std::max(1, options_.full_frame_interval);
+  choice.all = !guided_ || !tracking || interval == 1 ||
+               (!options_.full_frame_round_robin && frames_since_full_frame_ + 1 >= interval);
+  frames_since_full_frame_ = choice.all ? 0 : frames_since_full_frame_ + 1;
+  choice.full_frame.assign(n_cameras, choice.all);
+  if (!choice.all && options_.full_frame_round_robin && n_cameras > 0) {
+    // One camera per slot, n_cameras slots spread evenly over every `interval` tracking
+    // frame sets: the same full-frame images as all cameras every `interval` frame sets, but
+    // never more than one in a frame set (the p99 latency).
+    const long t = tracking_frames_;
+    const long per = static_cast<long>(n_cameras);
+    if ((t + 1) * per / interval > t * per / interval) {
+      choice.full_frame[next_sweep_camera_ % n_cameras] = true;
+      next_sweep_camera_ = (next_sweep_camera_ + 1) % n_cameras;
+      choice.sweeping = true;
+    }
+  }
+  // Searching (no pose yet): the full frame of a few cameras per frame set, in turn.
+  choice.searching = guided_ && !initialised && interval > 1;
+  const int per_search = options_.search_cameras_per_frame;
+  if (choice.searching && per_search > 0 && static_cast<size_t>(per_search) < n_cameras) {
+    choice.full_frame.assign(n_cameras, false);
+    for (int k = 0; k < per_search; ++k)
+      choice.full_frame[(next_search_camera_ + static_cast<size_t>(k)) % n_cameras] = true;
+    next_search_camera_ = (next_search_camera_ + static_cast<size_t>(per_search)) % n_cameras;
+  }
+  tracking_frames_ = tracking ? tracking_frames_ + 1 : 0;
+  return choice;
+}
+
+}  // namespace parkloc::localize

@@ -1,0 +1,164 @@
+#include "localize/read_planning.h"
+
+#include <algorithm>
+
+namespace parkloc::localize {
+
+ReadPlanner::ReadPlanner(const geometry::Rig& rig, const map::HdMap& map,
+                         const FloorHeights& floors, const ReadingOptions& options,
+                         const std::string& level, bool guided)
+    : rig_(rig), map_(map), floors_(floors), options_(options), schedule_(options, guided) {
+  for (const auto& l : map.landmarks())
+    if (level.empty() || l.level == level) {
+      lexicon_.push_back(l.text);
+      if (l.surface == map::Surface::kGround) floor_lexicon_.push_back(l.text);
+    }
+  roi_options_.margin_px = options.roi_margin_px;
+  roi_options_.min_size_px = options.roi_min_size_px;
+}
+
+void ReadPlanner::reset() {
+  schedule_.reset();
+  frame_index_ = -1;
+  last_asked_.clear();
+  last_read_.clear();
+  last_read_attempt_.clear();
+}
+
+ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const std::string& level) {
+  ++frame_index_;
+  const size_t n_cameras = rig_.cameras.size();
+  ReadPlan plan;
+  plan.tracking = tracking;
+  plan.level = level;
+  plan.choice = schedule_.next(n_cameras, tracking, ekf.initialised());
+  plan.regions.resize(n_cameras);
+  if (plan.choice.all) return plan;
+
+  // Regions of every guided camera, then the budget over all of them.
+  const auto nearby = map_.withinRadius(ekf.pose().translation(), options_.roi_radius_m, level);
+  auto& candidates = plan.regions;
+  for (size_t c = 0; c < n_cameras; ++c)
+    if (!plan.choice.full_frame[c])
+      candidates[c] = predictRegionCandidates(rig_.cameras[c], nearby, floors_, ekf.pose(),
+                                              ekf.covariance(), roi_options_);
+  RegionBudgetOptions budget;
+  budget.max_regions = plan.choice.sweeping ? std::min(options_.max_regions_per_frame,
+                                                       options_.max_regions_with_full_frame)
+                                            : options_.max_regions_per_frame;
+  if (options_.max_regions_per_frame <= 0)
+    budget.max_regions = 0;  // no budget
+  else if (budget.max_regions <= 0)
+    budget.max_regions = -1;  // nothing on this frame set
+  budget.first_camera = frame_index_ % static_cast<int>(std::max<size_t>(n_cameras, 1));
+  budget.min_height_px = options_.roi_min_height_px;
+  std::vector<std::vector<RegionCandidate>> kept(n_cameras);
+  if (budget.max_regions >= 0) {
+    const auto chosen = selectRegionsWithinBudget(candidates, last_asked_, frame_index_, budget);
+    for (size_t c = 0; c < n_cameras; ++c)
+      for (size_t i : chosen[c]) {
+        last_asked_[candidates[c][i].landmark_id] = frame_index_;
+        kept[c].push_back(std::move(candidates[c][i]));
+      }
+  }
+  candidates = std::move(kept);
+  // A frame set that sweeps a camera on the full frame spends its reads there.
+  if (options_.reread_interval_frames > 0) chooseReadsAndFits(candidates, plan.choice.sweeping);
+  return plan;
+}
+
+// Texts read lately are only fitted; of the others, the largest are read, at most
+// max_reads_per_frame over all cameras; the rest wait for a later frame set.
+void ReadPlanner::chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& candidates,
+                                     bool sweeping) {
+  struct Unread {
+    size_t camera, index;
+    double size;
+  };
+  // Whether `when` holds a frame index for `id` within the last reread_interval_frames.
+  const auto lately = [&](const std::map<std::string, int>& when, const std::string& id) {
+    const auto it = when.find(id);
+    return it != when.end() && frame_index_ - it->second < options_.reread_interval_frames;
+  };
+  std::vector<Unread> unread;
+  std::vector<std::vector<bool>> keep(candidates.size());
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    keep[c].assign(candidates[c].size(), false);
+    for (size_t i = 0; i < candidates[c].size(); ++i) {
+      RegionCandidate& r = candidates[c][i];
+      if (lately(last_read_, r.landmark_id)) {
+        r.roi.read = false;
+        keep[c][i] = r.height_px >= options_.tracked_min_height_px;
+      } else if (!lately(last_read_attempt_, r.landmark_id)) {
+        // (A region tried lately and not read, occluded or blurred, waits a while.)
+        unread.push_back({c, i, r.size_px});
+      }
+    }
+  }
+  std::stable_sort(unread.begin(), unread.end(),
+                   [](const Unread& a, const Unread& b) { return a.size > b.size; });
+  const size_t reads = sweeping ? 0
+                       : options_.max_reads_per_frame > 0
+                           ? std::min(unread.size(), size_t(options_.max_reads_per_frame))
+                           : unread.size();
+  for (size_t k = 0; k < reads; ++k) {
+    keep[unread[k].camera][unread[k].index] = true;
+    last_read_attempt_[candidates[unread[k].camera][unread[k].index].landmark_id] = frame_index_;
+  }
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    std::vector<RegionCandidate> kept;
+    for (size_t i = 0; i < candidates[c].size(); ++i)
+      if (keep[c][i]) kept.push_back(std::move(candidates[c][i]));
+    candidates[c] = std::move(kept);
+  }
+}
+
+ocr::SpotRequest ReadPlanner::request(size_t c, ReadPlan& plan, const geometry::Pose2& pose) const {
+  ocr::SpotRequest request;
+  request.camera = &rig_.cameras[c];
+  if (!plan.choice.full_frame[c]) {
+    for (auto& r : plan.regions[c]) {
+      request.lexicon.insert(request.lexicon.end(), r.roi.expected_texts.begin(),
+                             r.roi.expected_texts.end());
+      request.regions.push_back(std::move(r.roi));
+    }
+    return request;
+  }
+  request.lexicon = lexicon_;
+  request.floor_lexicon = floor_lexicon_;
+  request.second_opinions = options_.second_opinions;
+  // While tracking, the full frame is a sweep for what the prediction missed.
+  if (plan.tracking && options_.reread_interval_frames > 0) {
+    request.max_reads = std::max(0, options_.max_reads_per_frame);
+    request.detection_scale = static_cast<float>(options_.sweep_detection_scale);
+    if (options_.sweep_places_floor_texts) {
+      request.placed_floor_texts =
+          map::placeFloorTexts(map_, pose, options_.sweep_placement_range_m, plan.level);
+      request.placement_radius_m = options_.sweep_placement_radius_m;
+      request.narrow_to_placed_texts = false;
+      // Numbers beyond the floor view are seen at a grazing angle, and their corners fix
+      // the pose less well than those of the numbers the floor view shows (docs/OCR.md).
+      request.look_beyond_the_view = false;
+    }
+  } else if (plan.choice.searching) {
+    request.max_reads = std::max(0, options_.search_max_reads);
+    request.detection_scale = static_cast<float>(options_.search_detection_scale);
+  }
+  return request;
+}
+
+void ReadPlanner::noteOutcomes(const FrameResult& result) {
+  // One association per instance, camera by camera in rig order.
+  size_t k = 0;
+  for (const auto& camera : result.cameras)
+    for (const auto& instance : camera.instances) {
+      const Association& a = result.associations[k++];
+      if (a.landmark_id.empty()) continue;
+      if (a.verdict == AssociationVerdict::kAccepted && instance.read)
+        last_read_[a.landmark_id] = frame_index_;
+      else if (a.verdict != AssociationVerdict::kAccepted && !instance.read)
+        last_read_.erase(a.landmark_id);
+    }
+}
+
+}  // namespace parkloc::localize

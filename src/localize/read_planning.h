@@ -1,0 +1,188 @@
+#pragma once
+// Stage 2 of the pipeline, read planning: what the spotter is asked to read this frame set.
+//
+//  - Full frame or map-guided regions. While the track holds, the map's texts near the
+//    predicted pose are projected into each camera and only those regions are spotted
+//    (roi_prediction.h), under a per-frame budget (region_budget.h). Now and then one camera
+//    is swept on the full frame, in turn (the round robin), to catch what the prediction
+//    missed. Before the first fix a few cameras per frame set are spotted on the full frame,
+//    in turn (searching); when the track is lost, every camera, every frame set.
+//  - Reads or fits. A landmark read and accepted lately is only fitted to the ink where the
+//    map predicts it (ocr::RegionOfInterest::read == false, under 1 ms); of the others at
+//    most a few are read per frame set (~15 ms a crop), the largest first.
+//  - The ocr::SpotRequest of each camera: its lexicon, its regions, and for a full frame
+//    the detector scale, the read limit and the floor texts the tracked pose places nearby.
+//
+// The paper's pipeline (OCR-RTPS) spots every camera on the full frame every frame set.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "geometry/rig.h"
+#include "localize/floor_heights.h"
+#include "localize/frame_types.h"
+#include "localize/pose_ekf.h"
+#include "localize/region_budget.h"
+#include "localize/roi_prediction.h"
+#include "map/hd_map.h"
+#include "map/placed_texts.h"
+#include "ocr/text_spotter.h"
+
+namespace parkloc::localize {
+
+struct ReadingOptions {
+  // Spot only where the map predicts text while tracking; false: the full frame always.
+  bool map_guided = true;
+  // While tracking, each camera is spotted on the full frame once per this many frame sets
+  // (every frame set when lost or not initialised); 1: always the full frame. 30 frame sets
+  // (3 s at 10 Hz) sweep 13 % of the frame sets against 40 % with 10, at the same accuracy
+  // on the demo drive.
+  int full_frame_interval = 30;
+  // While tracking, the full-frame sweeps go one camera at a time in turn, spread evenly over
+  // full_frame_interval frame sets, so that no frame set spots two full frames (the p99
+  // latency); false: all cameras in the same frame set every full_frame_interval.
+  bool full_frame_round_robin = true;
+
+  // Searching (no fix yet): this many cameras are spotted on the full frame per frame set, in
+  // turn (0: all of them), and the texts of the last few frame sets are solved together
+  // (search_window.h). Spotting one camera costs 50-130 ms on two cores, all four 400-700 ms,
+  // against a p99 latency target of 150 ms. A lost track spots every camera every frame set:
+  // re-localising matters more than latency then, and one far text seen end-on rarely fixes
+  // a pose (one camera per frame set did not recover from a 4 m kidnap within 5 s, all four
+  // did in 3.5 s).
+  int search_cameras_per_frame = 1;
+  // While searching, at most this many detected texts are read per camera, the largest first
+  // (0: all): a large text is near and fixes the pose best.
+  int search_max_reads = 2;
+  // While searching, the detector's input is scaled by this: the round robin comes back to a
+  // camera every few frame sets, so a text missed at this scale is only a little late.
+  double search_detection_scale = 0.75;
+
+  // Map-guided regions: the map's texts within this radius (metres) of the predicted pose
+  // are projected into the cameras.
+  double roi_radius_m = 12.0;
+  // A predicted text's region is grown by the pose uncertainty and by this margin (pixels),
+  // for the map survey error and the OCR polygon jitter.
+  double roi_margin_px = 12.0;
+  // Predicted text smaller than this (longest side, pixels) cannot be read: skipped.
+  double roi_min_size_px = 8.0;
+  // Predicted text flatter than this (pixels across the reading direction: a grazing view)
+  // is not read reliably: skipped by the region budget.
+  double roi_min_height_px = 6.0;
+  // At most this many regions per frame set over all cameras, the ones that help most first
+  // (region_budget.h); <= 0: every predicted region. Each region costs the OCR engine ~18 ms
+  // of CPU; the EKF carries the pose between measurements. Off by default: a budget of 3
+  // made fixes too sparse through a turn on the demo drive (24 cm mean error).
+  int max_regions_per_frame = 0;
+  // On a frame set that sweeps a camera on the full frame (~100 ms), the region budget of
+  // the other cameras, to keep the frame set within the p99 latency target.
+  int max_regions_with_full_frame = 1;
+
+  // A landmark read and accepted within this many frame sets is only fitted, not read again
+  // (0: every region is read every frame set). Reading every region every frame set cost
+  // 560 ms median per frame set on the demo drive for 9.5 cm mean error, against 54 ms and
+  // 2.8 cm with 10 (and 2 reads per frame set).
+  int reread_interval_frames = 10;
+  // At most this many regions are read per frame set over all cameras, the largest unread
+  // first; one tried without success waits reread_interval_frames (<= 0: no limit).
+  int max_reads_per_frame = 2;
+  // Predicted text flatter than this (pixels) is not fitted: its corners would not fix the
+  // pose.
+  double tracked_min_height_px = 8.0;
+
+  // While tracking, the full-frame sweep's detector input is scaled by this (it only has to
+  // catch what the prediction missed). Chosen on the validation drives: the same mean error
+  // as 0.75 (1.27 / 0.78 / 0.99 cm) with the slowest sweep frame set at 61-102 ms.
+  double sweep_detection_scale = 0.5;
+  // While tracking, the sweep reads each floor box only the way round that the floor texts
+  // the tracked pose places near it read (ocr::SpotRequest::placed_floor_texts,
+  // map/placed_texts.h): one recognizer pass a box instead of two. It still decodes against
+  // the whole floor lexicon: narrowing that to the placed texts matched more worn and cut
+  // numbers, whose corners raised the val split's mean error from 1.41 to 1.75 cm.
+  bool sweep_places_floor_texts = true;
+  // The floor texts are placed out to this range (metres): the floor views' reach.
+  double sweep_placement_range_m = map::kFloorViewReachM;
+  // ... and looked for within this radius (metres) of a box.
+  double sweep_placement_radius_m = 1.0;
+
+  // Ask the spotter for second opinions (ocr::SpotRequest::second_opinions) on full frames.
+  // Off: on the test drives they moved no error figure but cost the full-frame frame sets
+  // 30-50 ms at p95 and p99, and a second opinion can only confirm a tracked pose, never
+  // start one (AssociationVerdict::kUnconfirmed).
+  bool second_opinions = false;
+};
+
+// Which cameras are spotted on the full frame this frame set: the round robin while
+// tracking, the search turn before the first fix.
+struct FullFrameChoice {
+  std::vector<bool> full_frame;  // per rig camera
+  bool all = false;              // every camera on the full frame (no map guidance)
+  bool sweeping = false;         // tracking, and one camera's turn for a full-frame sweep
+  bool searching = false;        // no fix yet: a few cameras in turn
+};
+
+class FullFrameSchedule {
+ public:
+  // `guided`: map-guided reading applies (false in the paper's pipeline).
+  FullFrameSchedule(const ReadingOptions& options, bool guided)
+      : options_(options), guided_(guided) {}
+  void reset() { *this = FullFrameSchedule(options_, guided_); }
+  // `tracking`: the filter's pose is good enough to predict regions; `initialised`: the
+  // filter has a pose at all (lost or not).
+  FullFrameChoice next(size_t n_cameras, bool tracking, bool initialised);
+
+ private:
+  ReadingOptions options_;
+  bool guided_ = true;
+  int frames_since_full_frame_ = 0;  // without the round robin
+  int tracking_frames_ = 0;          // frame sets since the track began
+  size_t next_sweep_camera_ = 0;
+  size_t next_search_camera_ = 0;
+};
+
+// The plan of one frame set.
+struct ReadPlan {
+  FullFrameChoice choice;
+  bool tracking = false;
+  std::vector<std::vector<RegionCandidate>> regions;  // per rig camera, the regions to spot
+  std::string level;                                  // map level of the plan ("": all)
+};
+
+class ReadPlanner {
+ public:
+  // The rig, map and floors must outlive the planner.
+  ReadPlanner(const geometry::Rig& rig, const map::HdMap& map, const FloorHeights& floors,
+              const ReadingOptions& options, const std::string& level, bool guided);
+  void reset();
+
+  // The plan of the next frame set at the filter's predicted pose. `tracking`: the filter's
+  // pose is good enough to predict regions; `level`: the map level driven on.
+  ReadPlan plan(bool tracking, const PoseEkf& ekf, const std::string& level);
+
+  // Camera c's request (its regions are moved out of the plan).
+  ocr::SpotRequest request(size_t c, ReadPlan& plan, const geometry::Pose2& pose) const;
+
+  // After association: a landmark read and accepted needs no reading for a while; one only
+  // fitted that does not fit the prediction is read again.
+  void noteOutcomes(const FrameResult& result);
+
+  const ReadingOptions& options() const { return options_; }
+
+ private:
+  void chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& candidates, bool sweeping);
+
+  const geometry::Rig& rig_;
+  const map::HdMap& map_;
+  const FloorHeights& floors_;
+  ReadingOptions options_;
+  RoiOptions roi_options_;
+  FullFrameSchedule schedule_;
+  std::vector<std::string> lexicon_;              // every text of the map (full-frame spotting)
+  std::vector<std::string> floor_lexicon_;        // the texts of it painted on the floor
+  int frame_index_ = -1;                          // the frame set being planned
+  std::map<std::string, int> last_asked_;         // landmark -> frame set it was last asked for
+  std::map<std::string, int> last_read_;          // ... last read and accepted
+  std::map<std::string, int> last_read_attempt_;  // ... last given a read
+};
+
+}  // namespace parkloc::localize

@@ -1,0 +1,92 @@
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "localize/read_planning.h"
+
+namespace parkloc::localize {
+namespace {
+
+constexpr size_t kCameras = 4;
+
+int countTrue(const std::vector<bool>& v) {
+  int n = 0;
+  for (bool b : v) n += b;
+  return n;
+}
+
+TEST(FullFrameScheduleTest, WhileTrackingTheRoundRobinSweepsOneCameraAtATimeEachOncePerInterval) {
+  ReadingOptions options;
+  options.full_frame_interval = 8;
+  FullFrameSchedule schedule(options, /*guided=*/true);
+  std::vector<int> sweeps(kCameras, 0);
+  int sweeping_frames = 0;
+  for (int k = 0; k < 16; ++k) {
+    const FullFrameChoice choice = schedule.next(kCameras, /*tracking=*/true, true);
+    EXPECT_FALSE(choice.all);
+    EXPECT_FALSE(choice.searching);
+    ASSERT_LE(countTrue(choice.full_frame), 1) << "frame set " << k;
+    EXPECT_EQ(choice.sweeping, countTrue(choice.full_frame) == 1);
+    sweeping_frames += choice.sweeping;
+    for (size_t c = 0; c < kCameras; ++c) sweeps[c] += choice.full_frame[c];
+  }
+  EXPECT_EQ(sweeping_frames, 8);  // 4 camera images per 8 frame sets, in turn
+  for (size_t c = 0; c < kCameras; ++c) EXPECT_EQ(sweeps[c], 2) << "camera " << c;
+}
+
+TEST(FullFrameScheduleTest, WithoutTheRoundRobinEveryCameraGoesFullFrameEveryInterval) {
+  ReadingOptions options;
+  options.full_frame_interval = 5;
+  options.full_frame_round_robin = false;
+  FullFrameSchedule schedule(options, true);
+  std::vector<int> all_frames;
+  for (int k = 0; k < 15; ++k) {
+    const FullFrameChoice choice = schedule.next(kCameras, true, true);
+    EXPECT_EQ(countTrue(choice.full_frame), choice.all ? 4 : 0);
+    if (choice.all) all_frames.push_back(k);
+  }
+  EXPECT_EQ(all_frames, (std::vector<int>{4, 9, 14}));
+}
+
+TEST(FullFrameScheduleTest, BeforeTheFirstFixOneCameraPerFrameSetIsSearchedInTurn) {
+  ReadingOptions options;
+  options.search_cameras_per_frame = 1;
+  FullFrameSchedule schedule(options, true);
+  for (int k = 0; k < 8; ++k) {
+    const FullFrameChoice choice = schedule.next(kCameras, false, /*initialised=*/false);
+    EXPECT_TRUE(choice.searching);
+    ASSERT_EQ(countTrue(choice.full_frame), 1);
+    EXPECT_TRUE(choice.full_frame[static_cast<size_t>(k) % kCameras]) << "frame set " << k;
+  }
+}
+
+TEST(FullFrameScheduleTest, ALostTrackAndThePapersPipelineSpotEveryCameraEveryFrameSet) {
+  ReadingOptions options;
+  FullFrameSchedule lost(options, true), paper(options, /*guided=*/false);
+  for (int k = 0; k < 5; ++k) {
+    const FullFrameChoice l = lost.next(kCameras, /*tracking=*/false, /*initialised=*/true);
+    EXPECT_TRUE(l.all);
+    EXPECT_FALSE(l.searching);
+    EXPECT_EQ(countTrue(l.full_frame), 4);
+    const FullFrameChoice p = paper.next(kCameras, false, false);
+    EXPECT_TRUE(p.all);
+    EXPECT_FALSE(p.searching);
+    EXPECT_EQ(countTrue(p.full_frame), 4);
+  }
+}
+
+TEST(FullFrameScheduleTest, TheRoundRobinStartsAfreshWhenTheTrackBegins) {
+  ReadingOptions options;
+  options.full_frame_interval = 8;
+  FullFrameSchedule schedule(options, true);
+  // 4 slots in 8 tracked frame sets: the 2nd, 4th, 6th and 8th; counted again after a loss.
+  EXPECT_FALSE(schedule.next(kCameras, true, true).sweeping);
+  EXPECT_TRUE(schedule.next(kCameras, true, true).sweeping);
+  EXPECT_FALSE(schedule.next(kCameras, true, true).sweeping);
+  EXPECT_TRUE(schedule.next(kCameras, false, true).all);
+  EXPECT_FALSE(schedule.next(kCameras, true, true).sweeping);
+  EXPECT_TRUE(schedule.next(kCameras, true, true).sweeping);
+}
+
+}  // namespace
+}  // namespace parkloc::localize

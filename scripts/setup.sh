@@ -85,3 +85,8 @@ write_model "$paddleocr"/ch_PP-OCRv4_det_infer.onnx models/band_detector_tuning.
 # (tools/recognizer_tuning/train.py; session 20).
 write_model "$paddleocr"/ch_PP-OCRv4_rec_infer.onnx models/recognizer_tuning.npz \
   third_party/models/parkloc_rec.onnx
+# The class heads (`parkloc train classifier`, committed under models/), beside the networks, so
+# that the model folder alone makes the spotter (config models.dir, $PARKLOC_MODEL_DIR).
+for head in models/text_classifier.yml models/text_classifier_unread.yml; do
+  cmp -s "$head" "third_party/models/$(basename "$head")" || cp "$head" third_party/models/
+done

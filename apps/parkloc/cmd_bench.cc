@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "apps/parkloc/command.h"
+#include "apps/parkloc/config_args.h"
 #include "apps/parkloc/eval_common.h"
 #include "eval/evaluation.h"
 #include "eval/report.h"
@@ -20,11 +21,11 @@ struct BenchArgs {
   std::string out;
   bool no_paper = false;
   bool quiet = false;
-  app::SpotterArgs spotter;
+  app::ConfigArgs config;
 };
 
 void runBench(const BenchArgs& a) {
-  auto spotter = app::makeSpotter(a.spotter);
+  auto spotter = app::makeSpotter(a.config.load());
   app::ProgressLine progress(a.quiet);
   eval::EvaluationOptions options;
   options.paper_ablation = false;
@@ -66,7 +67,7 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--out", args->out, "Also write a report folder");
   cmd->add_flag("--no-paper", args->no_paper, "Only the full pipeline");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
-  args->spotter.addTo(cmd);
+  args->config.addTo(cmd);
   cmd->callback([args] { runBench(*args); });
 });
 

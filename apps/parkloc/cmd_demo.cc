@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "apps/parkloc/command.h"
+#include "apps/parkloc/config_args.h"
 #include "apps/parkloc/eval_common.h"
 #include "eval/dataset.h"
 #include "eval/evaluation.h"
@@ -24,7 +25,7 @@ struct DemoArgs {
   int max_frames = -1;
   bool paper = false;
   bool quiet = false;
-  app::SpotterArgs spotter;
+  app::ConfigArgs config;
 };
 
 void runDemo(const DemoArgs& a) {
@@ -42,7 +43,7 @@ void runDemo(const DemoArgs& a) {
       });
   progress.finish();
 
-  auto spotter = app::makeSpotter(a.spotter);
+  auto spotter = app::makeSpotter(a.config.load());
   eval::EvaluationOptions options;
   options.paper_ablation = a.paper;
   options.trajectory_views = 1;
@@ -92,7 +93,7 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   cmd->add_flag("--paper", args->paper,
                 "Also run the paper's pipeline and its ablation (full-frame OCR, slower)");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
-  args->spotter.addTo(cmd);
+  args->config.addTo(cmd);
   cmd->callback([args] { runDemo(*args); });
 });
 

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "apps/parkloc/command.h"
+#include "apps/parkloc/config_args.h"
 #include "apps/parkloc/eval_common.h"
 #include "common/error.h"
 #include "eval/dataset.h"
@@ -34,13 +35,13 @@ struct EvalArgs {
   bool no_lexicon = false;
   bool whole_polygons = false;
   bool quiet = false;
-  app::SpotterArgs spotter;
+  app::ConfigArgs config;
   std::string command_line;
 };
 
 void runEvalOcr(const EvalArgs& a) {
   const std::vector<std::string> sequences = eval::splitSequences(a.dataset, a.split);
-  auto spotter = app::makeSpotter(a.spotter);
+  auto spotter = app::makeSpotter(a.config.load());
   app::ProgressLine progress(a.quiet);
   eval::OcrRunOptions options;
   options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
@@ -96,7 +97,7 @@ void runEvalOcr(const EvalArgs& a) {
 
 void runEval(const EvalArgs& a) {
   const std::vector<std::string> sequences = eval::splitSequences(a.dataset, a.split);
-  auto spotter = app::makeSpotter(a.spotter);
+  auto spotter = app::makeSpotter(a.config.load());
   app::ProgressLine progress(a.quiet);
   eval::EvaluationOptions options;
   options.paper_ablation = !a.no_paper;
@@ -133,7 +134,7 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   cmd->add_flag("--no-paper", args->no_paper, "Skip the paper pipeline and its ablation");
   cmd->add_flag("--no-oracle", args->no_oracle, "Skip the oracle-OCR variant");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
-  args->spotter.addTo(cmd);
+  args->config.addTo(cmd);
 
   auto ocr_args = std::make_shared<EvalArgs>();
   auto* ocr_cmd =
@@ -161,7 +162,7 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
                     "Match whole label polygons, not only their parts inside the image (as "
                     "until session 7)");
   ocr_cmd->add_flag("--quiet", ocr_args->quiet, "No progress on stderr");
-  ocr_args->spotter.addTo(ocr_cmd);
+  ocr_args->config.addTo(ocr_cmd);
   ocr_cmd->callback([ocr_args] { runEvalOcr(*ocr_args); });
 
   cmd->callback([args, ocr_cmd] {

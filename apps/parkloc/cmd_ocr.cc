@@ -5,7 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "apps/parkloc/command.h"
-#include "apps/parkloc/eval_common.h"
+#include "apps/parkloc/config_args.h"
 #include "common/error.h"
 #include "geometry/rig.h"
 #include "io/calibration_yaml.h"
@@ -23,11 +23,7 @@ struct OcrArgs {
   std::string draw;
   std::string lexicon;
   std::string map;
-  parkloc::app::SpotterArgs spotter;  // the models and the floor view, as for eval and run
-  int det_side = 960;
-  std::string direction = "classifier";
-  bool no_refine = false;
-  std::string view = "ground";
+  parkloc::app::ConfigArgs config;  // the spotter's options and models, as for eval and run
   std::string camera;
   std::string calib;
   std::vector<double> pose;  // x, y, yaw of the vehicle in the map; empty: none
@@ -36,16 +32,7 @@ struct OcrArgs {
 
 void run(const OcrArgs& args) {
   using namespace parkloc;
-  ocr::PpOcrOptions options = app::spotterOptions(args.spotter);
-  options.models.classifier = args.spotter.classifier;  // a missing file is an error here
-  options.models.unread_classifier = args.spotter.unread_classifier;
-  options.detection.scene_max_side = args.det_side;
-  options.reading.direction =
-      args.direction == "both" ? ocr::DirectionMode::kDecodeBoth : ocr::DirectionMode::kClassifier;
-  options.corners.refine = !args.no_refine;
-  options.detection.view = args.view == "raw"      ? ocr::FisheyeView::kRaw
-                           : args.view == "ground" ? ocr::FisheyeView::kGround
-                                                   : ocr::FisheyeView::kGroundAndRaw;
+  const ocr::PpOcrOptions options = config::spotterOptions(args.config.load());
   const geometry::Rig rig =
       args.calib.empty() ? geometry::defaultRig() : io::loadCalibration(args.calib);
   const geometry::RigCamera* camera = nullptr;
@@ -103,20 +90,11 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--draw", args->draw, "Write the image with instances drawn (PNG)");
   cmd->add_option("--lexicon", args->lexicon, "Candidate texts, one a line");
   cmd->add_option("--map", args->map, "Candidate texts from an HD map (GeoJSON)");
-  args->spotter.addTo(cmd);
-  cmd->add_option("--det-side", args->det_side, "Detection input: longer side in pixels")
-      ->capture_default_str();
-  cmd->add_option("--direction", args->direction, "classifier | both")
-      ->check(CLI::IsMember({"classifier", "both"}))
-      ->capture_default_str();
+  args->config.addTo(cmd);
   cmd->add_option("--camera", args->camera,
                   "Rig camera that took the images (front, rear, left, right): enables the "
                   "floor view and ground-plane corner fit");
   cmd->add_option("--calib", args->calib, "Rig calibration YAML (default: the built-in rig)");
-  cmd->add_option("--view", args->view, "With --camera: ground | raw | both")
-      ->check(CLI::IsMember({"ground", "raw", "both"}))
-      ->capture_default_str();
-  cmd->add_flag("--no-refine", args->no_refine, "Keep DB's boxes (no corner re-fit to the ink)");
   cmd->add_option("--pose", args->pose,
                   "Predicted vehicle pose X Y YAW (metres, radians) in --map: each floor box is "
                   "read against the texts placed near it, the way round they read")

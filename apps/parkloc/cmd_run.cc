@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "apps/parkloc/command.h"
+#include "apps/parkloc/config_args.h"
 #include "apps/parkloc/eval_common.h"
 #include "eval/dataset.h"
 #include "io/sequence.h"
@@ -20,18 +21,10 @@ struct RunArgs {
   std::string level;
   bool oracle = false, paper = false;
   bool no_afm = false, no_mcrp = false, no_mcap = false, no_odometry = false;
-  bool no_map_guided = false;
-  bool second_opinions = false;
-  bool no_sweep_placement = false;
-  int full_frame_interval = parkloc::localize::PipelineOptions{}.reading.full_frame_interval;
-  int reread_interval = parkloc::localize::PipelineOptions{}.reading.reread_interval_frames;
-  int max_reads = parkloc::localize::PipelineOptions{}.reading.max_reads_per_frame;
-  double sweep_scale = parkloc::localize::PipelineOptions{}.reading.sweep_detection_scale;
-  int search_cameras = parkloc::localize::PipelineOptions{}.reading.search_cameras_per_frame;
   size_t max_frames = 0;
   bool quiet = false;
   std::vector<std::string> inject;
-  parkloc::app::SpotterArgs spotter;
+  parkloc::app::ConfigArgs config;
 };
 
 void run(const RunArgs& a) {
@@ -39,25 +32,20 @@ void run(const RunArgs& a) {
   const io::Sequence sequence(a.sequence, a.calib, a.map, a.odometry);
   for (const auto& w : sequence.warnings()) std::cerr << "parkloc: warning: " << w << "\n";
 
+  const config::Config config = a.config.load();
   run::RunOptions options;
-  options.pipeline = a.paper ? localize::PipelineOptions::paper() : localize::PipelineOptions{};
-  options.pipeline.paper_modules.afm = !a.no_afm;
-  options.pipeline.paper_modules.mcrp = !a.no_mcrp;
-  options.pipeline.paper_modules.mcap = !a.no_mcap;
+  options.pipeline = config.pipeline;
+  if (a.paper) options.pipeline = localize::PipelineOptions::paper(options.pipeline);
+  if (a.no_afm) options.pipeline.paper_modules.afm = false;
+  if (a.no_mcrp) options.pipeline.paper_modules.mcrp = false;
+  if (a.no_mcap) options.pipeline.paper_modules.mcap = false;
   if (a.no_odometry) options.pipeline.motion.use_odometry = false;
-  if (a.no_map_guided) options.pipeline.reading.map_guided = false;
-  if (!a.paper) {
-    options.pipeline.reading.full_frame_interval = a.full_frame_interval;
-    options.pipeline.reading.reread_interval_frames = a.reread_interval;
-    options.pipeline.reading.max_reads_per_frame = a.max_reads;
-    options.pipeline.reading.sweep_detection_scale = a.sweep_scale;
-    options.pipeline.reading.sweep_places_floor_texts = !a.no_sweep_placement;
-    options.pipeline.reading.search_cameras_per_frame = a.search_cameras;
-    options.pipeline.reading.second_opinions = a.second_opinions;
-  }
   // Parking numbers repeat on every level of a garage: the drive's level comes from
-  // --level, else from the sequence's meta.json, else the pipeline votes.
-  options.pipeline.level = a.level.empty() ? eval::sequenceLevel(sequence.metaJson()) : a.level;
+  // --level, else the configuration, else the sequence's meta.json, else the pipeline votes.
+  if (!a.level.empty())
+    options.pipeline.level = a.level;
+  else if (options.pipeline.level.empty())
+    options.pipeline.level = eval::sequenceLevel(sequence.metaJson());
   options.oracle = a.oracle;
   options.max_frames = a.max_frames;
   options.out_dir = a.out;
@@ -70,7 +58,7 @@ void run(const RunArgs& a) {
     std::cerr << "parkloc: warning: no odometry: the filter predicts a random walk\n";
 
   std::unique_ptr<ocr::TextSpotter> spotter;
-  if (!a.oracle) spotter = app::makeSpotter(a.spotter);
+  if (!a.oracle) spotter = app::makeSpotter(config);
   app::ProgressLine progress(a.quiet);
   options.progress = [&](size_t done, size_t total) {
     progress({"run " + sequence.dir(), done, total});
@@ -123,41 +111,12 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_flag("--no-mcrp", args->no_mcrp, "One camera per landmark");
   cmd->add_flag("--no-mcap", args->no_mcap, "Only the nearest landmark");
   cmd->add_flag("--no-odometry", args->no_odometry, "Ignore wheel odometry");
-  cmd->add_flag("--no-map-guided", args->no_map_guided, "Full-frame spotting on every frame");
-  cmd->add_flag("--second-opinions", args->second_opinions,
-                "Full-frame spotting asks the fallback recognizer too; its matches can only "
-                "confirm a tracked pose");
-  cmd->add_option("--full-frame-interval", args->full_frame_interval,
-                  "Full-frame spotting every N frames while tracking")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  cmd->add_option("--reread-interval", args->reread_interval,
-                  "Track texts read in the last N frames by fitting their ink, without reading "
-                  "(0: read every region every frame)")
-      ->check(CLI::Range(0, 100000))
-      ->capture_default_str();
-  cmd->add_option("--max-reads", args->max_reads,
-                  "Regions read per frame set while tracking (0: no limit)")
-      ->check(CLI::Range(0, 100000))
-      ->capture_default_str();
-  cmd->add_option("--sweep-scale", args->sweep_scale,
-                  "While tracking, the full-frame sweep's detector input is scaled by this")
-      ->check(CLI::Range(0.25, 1.0))
-      ->capture_default_str();
-  cmd->add_flag("--no-sweep-placement", args->no_sweep_placement,
-                "While tracking, the sweep reads floor boxes both ways round, not only the way "
-                "the floor texts the pose places near them read");
-  cmd->add_option("--search-cameras", args->search_cameras,
-                  "Cameras spotted on the full frame per frame set before the first fix, in "
-                  "turn (0: all; a lost track always spots all)")
-      ->check(CLI::Range(0, 16))
-      ->capture_default_str();
   cmd->add_option("--max-frames", args->max_frames, "Process at most N frame sets (0: all)");
   cmd->add_flag("--quiet", args->quiet, "No progress line");
   cmd->add_option("--inject", args->inject,
                   "Inject faults, e.g. dark:front:3-8,drop:0.1 (see run/fault_injection.h)")
       ->allow_extra_args(false);
-  args->spotter.addTo(cmd);
+  args->config.addTo(cmd);
   cmd->callback([args] { run(*args); });
 });
 

@@ -8,8 +8,7 @@
 
 namespace parkloc::localize {
 
-PipelineOptions PipelineOptions::paper() {
-  PipelineOptions o;
+PipelineOptions PipelineOptions::paper(PipelineOptions o) {
   o.paper_mode = true;
   o.motion.use_odometry = false;
   o.reading.map_guided = false;

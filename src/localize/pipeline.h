@@ -57,9 +57,10 @@ struct PipelineOptions {
   TrackingOptions tracking;             // the track's lifecycle (track_lifecycle.h)
   PaperPipelineOptions paper_pipeline;  // the paper's positioning (paper_pipeline.h)
 
-  // The paper's pipeline: paper_mode on, no odometry, full-frame spotting every frame set,
-  // parking numbers only.
-  static PipelineOptions paper();
+  // The paper's pipeline on `base`'s other options: paper_mode on, no odometry, full-frame
+  // spotting every frame set, parking numbers only.
+  static PipelineOptions paper(PipelineOptions base);
+  static PipelineOptions paper() { return paper(PipelineOptions{}); }
 };
 
 class Pipeline {

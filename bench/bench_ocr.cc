@@ -136,8 +136,8 @@ BENCHMARK(BM_SpotFullFrame)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecon
 
 // What `parkloc ocr --camera` runs by default: the fine-tuned floor detector and both class
 // heads (read and unread) on top of PaddleOCR's recognizer, with parkloc's tuned recognizer
-// for second opinions (this frame's number needs none: see docs/OCR.md, session 10, for
-// the cost on the test split).
+// for second opinions (this frame's number needs none; docs/OCR.md gives their cost on the
+// test split).
 void BM_SpotFullFrameShipped(benchmark::State& state) {
   static const auto shipped = [] {
     ocr::PpOcrOptions options;

@@ -158,8 +158,7 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   ocr_cmd->add_flag("--whole-polygons", ocr_args->whole_polygons,
-                    "Match whole label polygons, not only their parts inside the image (as "
-                    "until session 7)");
+                    "Match whole label polygons, not only their parts inside the image");
   ocr_cmd->add_flag("--quiet", ocr_args->quiet, "No progress on stderr");
   ocr_args->spotter.addTo(ocr_cmd);
   ocr_cmd->callback([ocr_args] { runEvalOcr(*ocr_args); });

@@ -145,8 +145,8 @@ struct SpotterArgs {
                   "that text's size on the floor: tightened when too tall or long, refused as "
                   "that text when far too short (default: on)");
     cmd->add_flag("--reread-by-both-recognizers", reread_by_both_recognizers,
-                  "... by the first recognizer too (more time an image; with session 14's two "
-                  "margins it read 0.1 points more)");
+                  "... by the first recognizer too (more time an image; measured with two "
+                  "re-read margins, it read 0.1 points more numbers)");
     cmd->add_option("--floor-read-expand", floor_read_expand,
                     "Floor detector: its boxes are read from a crop grown by these factors "
                     "(along, across the text)")

@@ -30,8 +30,8 @@ std::vector<ocr::RegionOfInterest> predictRegions(const geometry::RigCamera& cam
                                                   const Eigen::Matrix3d& covariance,
                                                   const RoiOptions& options = {});
 
-// The same regions with the landmark id and the predicted text's size, for the per-frame
-// region budget (added later; additive).
+// The same regions with the landmark id and the predicted text's size, which the per-frame
+// region budget (localize/region_budget.h) ranks them by.
 std::vector<RegionCandidate> predictRegionCandidates(
     const geometry::RigCamera& camera, const std::vector<const map::Landmark*>& nearby,
     const FloorHeights& floors, const geometry::Pose2& pose, const Eigen::Matrix3d& covariance,

@@ -444,8 +444,8 @@ LeftFloorSpot spotOnTheLeftFloor(const PpOcrModelPaths& models, PpOcrOptions opt
 
 // The corner fit's tolerance on this 250 x 45 px number: the fit thresholds the ink inside
 // the detected box grown a little, so a different box moves it by a pixel or two. Measured:
-// 0.38 px with PaddleOCR's detector, 0.50 px with session 10's tuned floor detector, 2.08 px
-// with session 11's (whose corners gave the lower position error on the test split).
+// 0.38 px with PaddleOCR's detector, 2.08 px with parkloc's tuned floor detector (whose
+// corners give the lower position error on the test split).
 constexpr double kFloorCornerTolerancePx = 2.5;
 
 // One instance, "B2-117" as the lexicon's entry, its corners within the tolerance.

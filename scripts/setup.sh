@@ -49,7 +49,7 @@ fi
 # The models parkloc loads, under third_party/models: PaddleOCR's, or PaddleOCR's with the
 # tensors parkloc trained (models/*_tuning.npz) in place of its own, so no third-party weights
 # are committed; then rewritten into the same function with fewer element-wise passes
-# (tools/model_folding/fold_affine.py, docs/OCR.md "Session 9"). Training starts from the
+# (tools/model_folding/fold_affine.py, docs/OCR.md). Training starts from the
 # originals in third_party/models/paddleocr. Rewritten when a source, a tuning or a tool
 # changes.
 write_model() {  # PaddleOCR model, tuning ('' for none), output
@@ -82,7 +82,7 @@ write_model "$paddleocr"/ch_PP-OCRv4_det_infer.onnx models/floor_detector_tuning
 write_model "$paddleocr"/ch_PP-OCRv4_det_infer.onnx models/band_detector_tuning.npz \
   third_party/models/parkloc_band_det.onnx
 # The recognizer of second opinions: its SVTR neck and head tuned on rectified text crops
-# (tools/recognizer_tuning/train.py; session 20).
+# (tools/recognizer_tuning/train.py).
 write_model "$paddleocr"/ch_PP-OCRv4_rec_infer.onnx models/recognizer_tuning.npz \
   third_party/models/parkloc_rec.onnx
 # The class heads (`parkloc train classifier`, committed under models/), beside the networks, so

@@ -25,9 +25,11 @@ struct BenchArgs {
 };
 
 void runBench(const BenchArgs& a) {
-  auto spotter = app::makeSpotter(a.config.load());
+  const config::Config config = a.config.load();
+  auto spotter = app::makeSpotter(config);
   app::ProgressLine progress(a.quiet);
   eval::EvaluationOptions options;
+  options.parkloc_options = config.pipeline;
   options.paper_ablation = false;
   options.paper_own_spotting = !a.no_paper;
   options.oracle = false;

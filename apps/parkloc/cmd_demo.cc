@@ -43,8 +43,10 @@ void runDemo(const DemoArgs& a) {
       });
   progress.finish();
 
-  auto spotter = app::makeSpotter(a.config.load());
+  const config::Config config = a.config.load();
+  auto spotter = app::makeSpotter(config);
   eval::EvaluationOptions options;
+  options.parkloc_options = config.pipeline;
   options.paper_ablation = a.paper;
   options.trajectory_views = 1;
   options.progress = [&](const eval::Progress& p) {

@@ -41,7 +41,8 @@ struct EvalArgs {
 
 void runEvalOcr(const EvalArgs& a) {
   const std::vector<std::string> sequences = eval::splitSequences(a.dataset, a.split);
-  auto spotter = app::makeSpotter(a.config.load());
+  const config::Config config = a.config.load();
+  auto spotter = app::makeSpotter(config);
   app::ProgressLine progress(a.quiet);
   eval::OcrRunOptions options;
   options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
@@ -97,9 +98,11 @@ void runEvalOcr(const EvalArgs& a) {
 
 void runEval(const EvalArgs& a) {
   const std::vector<std::string> sequences = eval::splitSequences(a.dataset, a.split);
-  auto spotter = app::makeSpotter(a.config.load());
+  const config::Config config = a.config.load();
+  auto spotter = app::makeSpotter(config);
   app::ProgressLine progress(a.quiet);
   eval::EvaluationOptions options;
+  options.parkloc_options = config.pipeline;
   options.paper_ablation = !a.no_paper;
   options.oracle = !a.no_oracle;
   options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
@@ -159,8 +162,7 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   ocr_cmd->add_flag("--whole-polygons", ocr_args->whole_polygons,
-                    "Match whole label polygons, not only their parts inside the image (as "
-                    "until session 7)");
+                    "Match whole label polygons, not only their parts inside the image");
   ocr_cmd->add_flag("--quiet", ocr_args->quiet, "No progress on stderr");
   ocr_args->config.addTo(ocr_cmd);
   ocr_cmd->callback([ocr_args] { runEvalOcr(*ocr_args); });

@@ -13,6 +13,8 @@
 #include "eval/conditions.h"
 #include "eval/dataset.h"
 #include "eval/dead_reckoning.h"
+#include "eval/evaluation_variants.h"
+#include "eval/latency.h"
 #include "eval/number_recall.h"
 #include "eval/pose_prediction.h"
 #include "eval/tables.h"
@@ -23,10 +25,13 @@ namespace parkloc::eval {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using detail::EvaluationTotals;
+using detail::makeView;
+using detail::Source;
+using detail::VariantRun;
+using detail::VariantSpec;
+using detail::variantSpecs;
+using detail::VariantTally;
 
 // Per detection: +1 read correctly (matched to a label with the same text), 0 wrong
 // (unmatched, or matched and misread), -1 unknown (on a don't-care region).
@@ -53,107 +58,45 @@ void addRotationTags(const io::ImageLabels& labels, double dont_care_occlusion,
   }
 }
 
-enum class Source { kSpotter, kSharedFullFrame, kOracle, kOdometry };
-
-struct VariantSpec {
-  std::string key, title;
-  Source source = Source::kSpotter;
-  localize::PipelineOptions options;
-  bool afm = false, mcrp = false, mcap = false;
-  bool ablation = false;
+// One camera of a frame set, read once for every configuration.
+struct CameraData {
+  std::string name;
+  cv::Mat image;
+  std::optional<io::ImageLabels> labels;
+  std::vector<ocr::TextInstance> full_frame;
+  std::vector<int> correctness;
 };
 
-// What one variant accumulates over all sequences.
-struct VariantTally {
-  VariantSpec spec;
-  std::vector<FrameError> frames;
-  std::vector<std::set<std::string>> frame_tags;
-  std::vector<FrameTiming> timings;
-  size_t frames_total = 0, frames_with_pose = 0, after_fix = 0, with_pose_after_fix = 0;
-};
-
-// One variant's state within a sequence.
-struct VariantRun {
-  VariantTally* tally = nullptr;
-  std::unique_ptr<localize::Pipeline> pipeline;
-  std::unique_ptr<DeadReckoning> dead_reckoning;
-  std::vector<io::StampedPose> estimate;
-  std::set<std::string> levels;  // levels of the landmarks it used (for the map plot)
-  bool fixed = false;
-};
-
-std::vector<VariantSpec> variantSpecs(const EvaluationOptions& o, bool have_spotter) {
-  std::vector<VariantSpec> specs;
-  if (o.parkloc && have_spotter) {
-    specs.push_back({"parkloc", "parkloc (full pipeline)", Source::kSpotter, o.parkloc_options});
-  }
-  if (o.paper_ablation && have_spotter) {
-    // The paper's Table 10 row order.
-    const bool rows[8][3] = {{false, false, false}, {true, false, false}, {true, true, false},
-                             {true, false, true},   {false, true, false}, {false, false, true},
-                             {false, true, true},   {true, true, true}};
-    for (const auto& r : rows) {
-      VariantSpec s;
-      s.afm = r[0], s.mcrp = r[1], s.mcap = r[2];
-      s.ablation = true;
-      s.key = fmt::format("paper_afm{}_mcrp{}_mcap{}", int(s.afm), int(s.mcrp), int(s.mcap));
-      s.title = s.afm && s.mcrp && s.mcap
-                    ? "OCR-RTPS (paper pipeline)"
-                    : fmt::format("OCR-RTPS AFM {} MCRP {} MCAP {}", s.afm ? "on" : "off",
-                                  s.mcrp ? "on" : "off", s.mcap ? "on" : "off");
-      s.source = Source::kSharedFullFrame;
-      s.options = localize::PipelineOptions::paper();
-      s.options.paper_modules.afm = s.afm, s.options.paper_modules.mcrp = s.mcrp, s.options.paper_modules.mcap = s.mcap;
-      specs.push_back(s);
+// Table 3's anomaly filter figures: each parking-number reading the filter was offered, whether
+// it was read right (against the labels) and whether the filter kept it.
+void countAnomalyFilter(const std::vector<localize::Association>& associations,
+                        const std::vector<CameraData>& cameras, AnomalyFilterCounts& afm_counts) {
+  for (const localize::Association& a : associations) {
+    const auto cam = std::find_if(cameras.begin(), cameras.end(),
+                                  [&](const CameraData& c) { return c.name == a.camera; });
+    if (cam == cameras.end() || a.instance_index < 0 ||
+        static_cast<size_t>(a.instance_index) >= cam->correctness.size())
+      continue;
+    using V = localize::AssociationVerdict;
+    if (a.verdict != V::kAccepted && a.verdict != V::kNotInMap && a.verdict != V::kAnomaly)
+      continue;
+    const int correct = cam->correctness[static_cast<size_t>(a.instance_index)];
+    if (correct < 0) continue;
+    ++afm_counts.readings;
+    if (a.verdict == V::kAccepted) {
+      ++afm_counts.kept;
+      afm_counts.kept_correct += correct;
+    }
+    if (!correct) {
+      ++afm_counts.anomalies;
+      afm_counts.anomalies_rejected += a.verdict != V::kAccepted;
     }
   }
-  if (o.paper_own_spotting && have_spotter) {
-    VariantSpec s;
-    s.key = "paper_spotting";
-    s.title = "OCR-RTPS (paper pipeline, spotting itself)";
-    s.source = Source::kSpotter;
-    s.options = localize::PipelineOptions::paper();
-    s.afm = s.mcrp = s.mcap = true;
-    specs.push_back(s);
-  }
-  if (o.oracle) {
-    specs.push_back({"oracle", "parkloc on ground-truth text (oracle OCR)", Source::kOracle,
-                     o.parkloc_options});
-  }
-  if (o.odometry_only) {
-    specs.push_back({"odometry_only", "odometry-only dead reckoning", Source::kOdometry, {}});
-  }
-  return specs;
-}
-
-VariantResult toResult(const VariantTally& t) {
-  VariantResult r;
-  r.key = t.spec.key;
-  r.title = t.spec.title;
-  r.error = errorFromFrames(t.frames);
-  r.latency = latencyReport(t.timings);
-  r.frames = t.frames_total;
-  r.frames_with_pose = t.frames_with_pose;
-  r.frames_after_first_fix = t.after_fix;
-  r.frames_with_pose_after_first_fix = t.with_pose_after_fix;
-  return r;
-}
-
-std::map<std::string, TrajectoryError> conditionErrors(const VariantTally& t) {
-  std::map<std::string, TrajectoryError> out;
-  for (const std::string& name : conditionNames()) {
-    std::vector<FrameError> frames;
-    for (size_t i = 0; i < t.frames.size(); ++i) {
-      if (t.frame_tags[i].count(name)) frames.push_back(t.frames[i]);
-    }
-    if (!frames.empty()) out[name] = errorFromFrames(frames);
-  }
-  return out;
 }
 
 // The odometry samples in (after, until].
 std::vector<OdometrySample> odometrySlice(const std::vector<OdometrySample>& all,
-                                          double after, double until) {
+                                              double after, double until) {
   std::vector<OdometrySample> out;
   auto it = std::upper_bound(all.begin(), all.end(), after,
                              [](double t, const OdometrySample& s) { return t < s.timestamp; });
@@ -174,82 +117,7 @@ std::optional<geometry::Pose2> truthAt(const std::vector<io::StampedPose>& truth
   return geometry::Pose2::fromRigid3(best->pose);
 }
 
-TrajectoryView makeView(const io::Sequence& seq, const VariantRun& run, double t0, double t1) {
-  TrajectoryView v;
-  v.name =
-      std::filesystem::path(seq.dir()).filename().string() + " (" + run.tally->spec.title + ")";
-  for (const auto& p : seq.groundTruth()) {
-    if (p.timestamp < t0 - 1e-6 || p.timestamp > t1 + 1e-6) continue;
-    v.truth_x.push_back(p.pose.translation().x());
-    v.truth_y.push_back(p.pose.translation().y());
-  }
-  for (const auto& p : run.estimate) {
-    v.estimate_x.push_back(p.pose.translation().x());
-    v.estimate_y.push_back(p.pose.translation().y());
-  }
-  for (const map::Landmark& l : seq.map().landmarks()) {
-    if (!run.levels.empty() && !run.levels.count(l.level)) continue;
-    v.landmark_x.push_back(l.position.x());
-    v.landmark_y.push_back(l.position.y());
-    v.landmark_text.push_back(l.cls == map::TextClass::kParkingNumber ? l.text : "");
-  }
-  return v;
-}
-
 }  // namespace
-
-OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSpotter& spotter,
-                          const OcrRunOptions& options) {
-  OcrEvaluator evaluator(options.metrics);
-  NumberRecallTally frame_sets(options.metrics), drives(options.metrics);
-  for (size_t s = 0; s < sequences.size(); ++s) {
-    const io::Sequence seq(sequences[s]);
-    const std::vector<std::string> conditions =
-        sequenceConditions(seq.metaJson(), seq.dir() + "/meta.json");
-    ocr::SpotRequest request;
-    if (options.use_lexicon) {
-      request.lexicon = map::distinctTexts(seq.map());
-      request.floor_lexicon = map::distinctTexts(seq.map(), /*floor_only=*/true);
-    }
-    size_t frames = seq.timestamps().size();
-    if (options.max_frames_per_sequence) frames = std::min(frames, options.max_frames_per_sequence);
-    const std::string name = std::filesystem::path(seq.dir()).filename().string();
-    const std::string stage = fmt::format("sequence {}/{} {}", s + 1, sequences.size(), name);
-    std::optional<PosePrediction> prediction;
-    if (const auto it = options.estimated_poses.find(name);
-        options.use_lexicon && it != options.estimated_poses.end())
-      prediction.emplace(it->second, seq.odometry());
-    const std::string level = sequenceLevel(seq.metaJson());
-    request.placement_radius_m = options.placement_radius_m;
-    for (size_t i = 0; i < frames; ++i) {
-      request.placed_floor_texts.clear();
-      if (prediction)
-        if (const auto pose = prediction->at(seq.timestamps()[i]))
-          request.placed_floor_texts =
-              map::placeFloorTexts(seq.map(), *pose, options.placement_range_m, level);
-      for (const std::string& camera : seq.cameras()) {
-        const std::optional<io::ImageLabels> labels = seq.loadLabels(i, camera);
-        if (!labels) continue;  // no ground truth: nothing to score
-        const cv::Mat image = seq.loadImage(i, camera);
-        if (image.empty()) continue;
-        request.camera = seq.rig().find(camera);  // the floor view needs the camera
-        const auto start = Clock::now();
-        const std::vector<ocr::TextInstance> found = spotter.spot(image, request);
-        evaluator.add(*labels, found, conditions, msSince(start) / 1000.0);
-        frame_sets.addImage(*labels, found);
-        drives.addImage(*labels, found);
-        if (options.on_image) options.on_image(name, *labels, found);
-      }
-      frame_sets.endGroup();
-      if (options.progress) options.progress({stage, i + 1, frames});
-    }
-    drives.endGroup();
-  }
-  OcrEvaluation out = evaluator.result();
-  out.parking_numbers_per_frame_set = frame_sets.result();
-  out.parking_numbers_per_drive = drives.result();
-  return out;
-}
 
 EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
                                    ocr::TextSpotter* spotter, const EvaluationOptions& options) {
@@ -324,13 +192,6 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
       previous_time = t;
 
       // Read every camera once; spot the full frame once for all paper variants.
-      struct CameraData {
-        std::string name;
-        cv::Mat image;
-        std::optional<io::ImageLabels> labels;
-        std::vector<ocr::TextInstance> full_frame;
-        std::vector<int> correctness;
-      };
       std::vector<CameraData> cameras;
       std::set<std::string> tags(conditions.begin(), conditions.end());
       double shared_ocr_ms = 0.0;
@@ -437,29 +298,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         }
 
         // Table 3's anomaly filter figures, from the paper pipeline with every module on.
-        if (&run == paper_full) {
-          for (const localize::Association& a : result.associations) {
-            const auto cam = std::find_if(cameras.begin(), cameras.end(),
-                                          [&](const CameraData& c) { return c.name == a.camera; });
-            if (cam == cameras.end() || a.instance_index < 0 ||
-                static_cast<size_t>(a.instance_index) >= cam->correctness.size())
-              continue;
-            using V = localize::AssociationVerdict;
-            if (a.verdict != V::kAccepted && a.verdict != V::kNotInMap && a.verdict != V::kAnomaly)
-              continue;
-            const int correct = cam->correctness[static_cast<size_t>(a.instance_index)];
-            if (correct < 0) continue;
-            ++afm_counts.readings;
-            if (a.verdict == V::kAccepted) {
-              ++afm_counts.kept;
-              afm_counts.kept_correct += correct;
-            }
-            if (!correct) {
-              ++afm_counts.anomalies;
-              afm_counts.anomalies_rejected += a.verdict != V::kAccepted;
-            }
-          }
-        }
+        if (&run == paper_full) countAnomalyFilter(result.associations, cameras, afm_counts);
       }
       if (options.progress) options.progress({stage, i + 1, frames});
     }
@@ -482,90 +321,10 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     }
   }
 
-  // Results and tables.
-  EvaluationReport report;
-  report.title = options.title;
-  report.dataset = options.dataset;
-  report.command = options.command;
-  report.trajectories = views;
-  std::map<std::string, const VariantTally*> by_key;
-  for (const VariantTally& t : tallies) by_key[t.spec.key] = &t;
-  auto result = [&](const std::string& key) -> std::optional<VariantResult> {
-    const auto it = by_key.find(key);
-    if (it == by_key.end()) return std::nullopt;
-    return toResult(*it->second);
-  };
-  if (auto main = result(main_key)) report.main = *main;
-  const std::string paper_key = "paper_afm1_mcrp1_mcap1";
-  if (!shared_ocr && own_ocr_evaluator.result().images > 0) {
-    report.ocr = own_ocr_evaluator.result();
-    for (Table& t : table3All(own_ocr_evaluator.result(), std::nullopt))
-      report.tables.push_back(std::move(t));
-    report.notes.push_back(fmt::format(
-        "OCR figures from the {} camera images the parkloc pipeline spotted on the full frame "
-        "(map-guided frames left out).",
-        own_ocr_evaluator.result().images));
-  }
-  if (shared_ocr) {
-    report.ocr = ocr_evaluator.result();
-    for (Table& t : table3All(ocr_evaluator.result(), afm_counts))
-      report.tables.push_back(std::move(t));
-    if (!shared_second_opinions)
-      report.notes.push_back(
-          "OCR figures from the full-frame spotting that fed the paper's pipeline, without "
-          "second opinions (`parkloc eval ocr` asks for them by default).");
-  }
-  {
-    std::vector<AblationRow> rows;
-    std::vector<VariantResult> extra;
-    for (const VariantTally& t : tallies) {
-      if (t.spec.ablation) rows.push_back({t.spec.afm, t.spec.mcrp, t.spec.mcap, toResult(t)});
-    }
-    for (const char* key : {"parkloc", "oracle"}) {
-      if (auto r = result(key)) extra.push_back(*r);
-    }
-    report.tables.push_back(table10(rows, extra));
-  }
-  {
-    std::vector<std::pair<std::string, std::map<std::string, TrajectoryError>>> per_variant;
-    for (const std::string& key : {std::string("parkloc"), paper_key, std::string("paper_spotting"),
-                                   std::string("oracle")}) {
-      const auto it = by_key.find(key);
-      if (it != by_key.end())
-        per_variant.emplace_back(it->second->spec.title, conditionErrors(*it->second));
-    }
-    report.tables.push_back(table8(per_variant));
-  }
-  {
-    std::vector<VariantResult> rows;
-    for (const std::string& key : {std::string("parkloc"), paper_key, std::string("paper_spotting"),
-                                   std::string("odometry_only"), std::string("oracle")}) {
-      if (auto r = result(key)) rows.push_back(*r);
-    }
-    report.tables.push_back(table5(rows));
-  }
-  {
-    std::vector<VariantResult> rows;
-    for (const std::string& key : {std::string("parkloc"), paper_key, std::string("paper_spotting"),
-                                   std::string("oracle")}) {
-      if (auto r = result(key)) rows.push_back(*r);
-    }
-    report.tables.push_back(latencyTable(rows));
-  }
-  for (const VariantTally& t : tallies) report.variants.push_back(toResult(t));
-  report.notes.push_back(fmt::format(
-      "{} sequences, {} frame sets. Position error: evo-style APE (translation, no alignment, "
-      "association by timestamp within 10 ms) over frames with a pose.",
-      sequences.size(), report.main.frames));
-  if (shared_ocr) {
-    report.notes.push_back(
-        "Paper-pipeline variants share one full-frame OCR pass per image; its time is "
-        "counted in each variant's latency.");
-  }
-  if (!spotter) {
-    report.notes.push_back("No text spotter: only the oracle and odometry-only variants ran.");
-  }
-  return report;
+  return detail::assembleReport(
+      options,
+      EvaluationTotals{tallies, main_key, spotter != nullptr, shared_ocr, shared_second_opinions,
+                       ocr_evaluator, own_ocr_evaluator, afm_counts, views, sequences.size()});
 }
 
 }  // namespace parkloc::eval

@@ -1,5 +1,6 @@
 #pragma once
 // Latency statistics per pipeline stage and for the whole frame set, in milliseconds.
+#include <chrono>
 #include <map>
 #include <string>
 #include <vector>
@@ -23,5 +24,11 @@ struct LatencyReport {
 };
 
 LatencyReport latencyReport(const std::vector<FrameTiming>& frames);
+
+// Wall-clock milliseconds since `start`.
+inline double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
 
 }  // namespace parkloc::eval

@@ -60,22 +60,23 @@ struct OcrEvaluation {
   // number costs.
   std::map<std::string, OcrCounts> parking_numbers_by_height;
   // Parking numbers by their paint (paintBin of io::LabelInstance::paint_wear): intact or worn.
-  // A false detection has no paint and counts in none (added later).
+  // A false detection has no paint and counts in none.
   std::map<std::string, OcrCounts> parking_numbers_by_paint;
   // Parking numbers in full sight and partly hidden (sightBin): a raw reading can be exact
-  // only where every character shows. A false detection counts in neither (added later).
+  // only where every character shows. A false detection counts in neither.
   std::map<std::string, OcrCounts> parking_numbers_by_sight;
   // Parking numbers by how far their ink stands out of the sensor's noise (inkBin of
-  // io::LabelInstance::ink_snr); labels without it count in none (added later).
+  // io::LabelInstance::ink_snr); labels without it count in none.
   std::map<std::string, OcrCounts> parking_numbers_by_ink;
   // Per class, with every text at least kHeightRuleMinPx tall cared for (unless half
-  // occluded), whatever its label's legibility: the simulator's rule until session 6, kept
-  // so that figures compare across the change to the blur- and pitch-aware rule.
+  // occluded), whatever its label's legibility: a height-only rule, reported beside the
+  // labels' legible flag (which also weighs the pitch along the reading direction and the
+  // camera's blur) to show how much the choice of rule moves the figures.
   std::map<std::string, OcrCounts> height_rule_by_class;
   // Parking numbers per frame set, found or read in some camera's image
   // (eval/number_recall.h; filled by evaluateOcr, empty from OcrEvaluator alone).
   NumberRecall parking_numbers_per_frame_set;
-  // ... and per drive: the numbers a drive finds and reads in some image at all (added later).
+  // ... and per drive: the numbers a drive finds and reads in some image at all.
   NumberRecall parking_numbers_per_drive;
   size_t images = 0;
   double spotting_seconds = 0.0;  // time spent in the engine, for images per second
@@ -93,8 +94,7 @@ struct OcrEvaluationOptions {
   // less than half occluded).
   double dont_care_occlusion = 0.5;
   // Compare polygons by their parts inside the image (MatchingOptions::image_size): a
-  // number cut by the border is found when its visible part is. False: whole polygons, as
-  // until session 7.
+  // number cut by the border is found when its visible part is. False: whole polygons.
   bool inside_image_only = true;
 };
 

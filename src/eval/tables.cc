@@ -174,9 +174,9 @@ Table table3HeightRule(const OcrEvaluation& ocr) {
   return subsetTable(
       "table3_height_rule",
       "Table 3 under the height-only rule: every text 8 px or taller cared for",
-      "The simulator's legibility rule until session 6: text at least 8 px tall (apparent "
-      "height) and less than half occluded is cared for, however squeezed along its reading "
-      "direction or smeared by blur. The tables above follow the labels' legible flag.",
+      "A height-only legibility rule: text at least 8 px tall (apparent height) and less than "
+      "half occluded is cared for, however squeezed along its reading direction or smeared by "
+      "blur. The tables above follow the labels' legible flag, which weighs both.",
       "Class", kClasses, ocr.height_rule_by_class);
 }
 

@@ -38,11 +38,11 @@ struct LabelInstance {
   double rotation_deg = 0.0;
   std::optional<geometry::TextPolygon> visible_polygon;  // text cut or partly hidden
   // How worn the paint is, 0 (intact) to 1 (mostly erased): the simulator's wear of painted
-  // floor text; 0 for other text and in labels written before session 17 (added later).
+  // floor text; 0 for other text and in labels without the field.
   double paint_wear = 0.0;
   // Painted floor text: the signal-to-noise ratio of one reading feature of its ink against
   // the floor (sim::featureSnr; not legible below 5). Absent for other text and in labels
-  // written before session 19 (added later).
+  // without the field.
   std::optional<double> ink_snr;
 };
 

@@ -14,34 +14,11 @@
 
 #include "geometry/pose.h"
 #include "geometry/rig.h"
+#include "sim/camera_rays.h"
 #include "sim/garage.h"
+#include "sim/lighting.h"
 
 namespace parkloc::sim {
-
-// Per camera: unit rays in the camera frame (zero where the model has no ray), the angle
-// a pixel subtends (radians) and the vignetting factor.
-struct CameraRays {
-  int width = 0, height = 0;
-  std::vector<Eigen::Vector3f> rays;
-  std::vector<float> pixel_angle;
-  std::vector<float> vignette;
-};
-CameraRays buildCameraRays(const geometry::CameraModel& model, float vignetting = 0.35f);
-std::vector<CameraRays> buildRigRays(const geometry::Rig& rig);
-
-// Light and sensor of one drive. "bright": every lamp on, low noise; "weak": dim, a third of
-// the lamps off, high gain noise; "blur": bright light with defocus and motion blur.
-struct LightingOptions {
-  float ambient = 0.22f;
-  float lamp_power = 6.0f;  // irradiance x distance^2 of one lamp
-  float lamps_on_share = 1.0f;
-  float exposure = 1.0f;
-  float noise_sigma = 1.5f;     // grey levels (8-bit) of Gaussian sensor noise
-  float defocus_sigma = 0.0f;   // pixels
-  float motion_blur_px = 0.0f;  // horizontal blur length on the side cameras
-  uint64_t lamp_seed = 1;       // which lamps are off
-};
-LightingOptions lightingForCondition(const std::string& condition, uint64_t seed);
 
 class Renderer {
  public:

@@ -110,8 +110,7 @@ TEST_F(LabelsTest, LegibleDefaultsToTrueAndMustBeABoolean) {
   EXPECT_EQ(loadError(bad), "labels " + bad + ": instance #0: field 'legible': expected a boolean");
 }
 
-// Labels written before session 17 have no paint_wear: intact paint. A wear outside [0, 1]
-// is an error.
+// Labels without paint_wear mean intact paint. A wear outside [0, 1] is an error.
 TEST_F(LabelsTest, PaintWearDefaultsToIntactAndMustLieBetweenZeroAndOne) {
   const std::string old = write("old.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,
       "height": 10, "instances": [{"polygon": [[0,0],[1,0],[1,1],[0,1]], "text": "A",
@@ -125,7 +124,7 @@ TEST_F(LabelsTest, PaintWearDefaultsToIntactAndMustLieBetweenZeroAndOne) {
                                 "got 1.5");
 }
 
-// Labels written before session 19, and text other than painted floor text, have no ink_snr.
+// ink_snr is optional (text other than painted floor text has none).
 // A negative one is an error.
 TEST_F(LabelsTest, InkSnrIsOptionalAndNeverNegative) {
   const std::string old = write("old.json", R"({"camera": "front", "timestamp": 1.0, "width": 10,

@@ -101,7 +101,7 @@ TEST(TextClassifier, ChoosesOnlyAmongTheClassesWithAWeight) {
     const auto floor = classifier.classify(s.image, s.quad, s.text, kFloorClasses);
     EXPECT_NE(floor.first, map::TextClass::kPillar);
     if (any.first != map::TextClass::kPillar) {
-      // The pillar output no longer shares the softmax: same class, a score at least as high.
+      // Without the pillar output in the softmax: the same class, a score at least as high.
       EXPECT_EQ(floor.first, any.first);
       EXPECT_GE(floor.second, any.second - 1e-6f);
     }

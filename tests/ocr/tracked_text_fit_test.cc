@@ -38,8 +38,8 @@ TEST_F(TrackedTextFitTest, FitsTheInkAroundAPredictionAFewPixelsOff) {
 
 TEST_F(TrackedTextFitTest, FitsDimTextUnderSensorNoise) {
   // Weak light (a validation drive's level): concrete at 48 grey levels, paint only 12
-  // above it, noise of 6. The fit used to demand 20 levels of contrast and found nothing,
-  // so the track starved and the pose dead-reckoned away (57 cm mean error on g09_B2_d0).
+  // above it, noise of 6. A fit that demands 20 levels of contrast finds nothing here, so
+  // the track starves and the pose dead-reckons away (57 cm mean error on g09_B2_d0).
   const auto dim =
       testing::renderFloorText(*left, "B2-117", {2.0, 2.6}, M_PI, 1.2, 0.45, 0.5, 24.0);
   const auto fit = fitTrackedText(dim.image, shifted(dim.truth, {3, -2}), left);

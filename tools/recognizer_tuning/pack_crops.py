@@ -1,6 +1,6 @@
 """Copies crop folders of `parkloc train recognizer-data` with every crop re-encoded as JPEG,
 so that a training set fits what travels to a lent GPU machine (64 MiB with the repository;
-quality 92 makes session 20's 11,600 crops 22 MB instead of 125 MB). train_whole.py reads
+quality 92 makes a training set of 11,600 crops 22 MB instead of 125 MB). train_whole.py reads
 either.
 
     /usr/bin/python3 tools/recognizer_tuning/pack_crops.py --quality 92 --out .gpu \

@@ -49,8 +49,7 @@ BLANK = 0
 HEIGHT = 48
 STEP = 8  # input pixels per CTC time step
 # The C++ feeds every crop padded to at least this width (CtcRecognizer::kInputWidth, as
-# PaddleOCR does, since session 9); the committed models/recognizer_tuning.npz was trained
-# so (session 10).
+# PaddleOCR does); the committed models/recognizer_tuning.npz was trained so.
 INPUT_WIDTH = 320
 
 

@@ -1,0 +1,102 @@
+#include "eval/evaluation_variants.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "eval/conditions.h"
+
+namespace parkloc::eval::detail {
+
+std::vector<VariantSpec> variantSpecs(const EvaluationOptions& o, bool have_spotter) {
+  std::vector<VariantSpec> specs;
+  if (o.parkloc && have_spotter) {
+    specs.push_back({"parkloc", "parkloc (full pipeline)", Source::kSpotter, o.parkloc_options});
+  }
+  if (o.paper_ablation && have_spotter) {
+    // The paper's Table 10 row order.
+    const bool rows[8][3] = {{false, false, false}, {true, false, false}, {true, true, false},
+                             {true, false, true},   {false, true, false}, {false, false, true},
+                             {false, true, true},   {true, true, true}};
+    for (const auto& r : rows) {
+      VariantSpec s;
+      s.afm = r[0], s.mcrp = r[1], s.mcap = r[2];
+      s.ablation = true;
+      s.key = fmt::format("paper_afm{}_mcrp{}_mcap{}", int(s.afm), int(s.mcrp), int(s.mcap));
+      s.title = s.afm && s.mcrp && s.mcap
+                    ? "OCR-RTPS (paper pipeline)"
+                    : fmt::format("OCR-RTPS AFM {} MCRP {} MCAP {}", s.afm ? "on" : "off",
+                                  s.mcrp ? "on" : "off", s.mcap ? "on" : "off");
+      s.source = Source::kSharedFullFrame;
+      s.options = localize::PipelineOptions::paper(o.parkloc_options);
+      s.options.paper_modules.afm = s.afm, s.options.paper_modules.mcrp = s.mcrp, s.options.paper_modules.mcap = s.mcap;
+      specs.push_back(s);
+    }
+  }
+  if (o.paper_own_spotting && have_spotter) {
+    VariantSpec s;
+    s.key = "paper_spotting";
+    s.title = "OCR-RTPS (paper pipeline, spotting itself)";
+    s.source = Source::kSpotter;
+    s.options = localize::PipelineOptions::paper(o.parkloc_options);
+    s.afm = s.mcrp = s.mcap = true;
+    specs.push_back(s);
+  }
+  if (o.oracle) {
+    specs.push_back({"oracle", "parkloc on ground-truth text (oracle OCR)", Source::kOracle,
+                     o.parkloc_options});
+  }
+  if (o.odometry_only) {
+    specs.push_back({"odometry_only", "odometry-only dead reckoning", Source::kOdometry, {}});
+  }
+  return specs;
+}
+
+VariantResult toResult(const VariantTally& t) {
+  VariantResult r;
+  r.key = t.spec.key;
+  r.title = t.spec.title;
+  r.error = errorFromFrames(t.frames);
+  r.latency = latencyReport(t.timings);
+  r.frames = t.frames_total;
+  r.frames_with_pose = t.frames_with_pose;
+  r.frames_after_first_fix = t.after_fix;
+  r.frames_with_pose_after_first_fix = t.with_pose_after_fix;
+  return r;
+}
+
+std::map<std::string, TrajectoryError> conditionErrors(const VariantTally& t) {
+  std::map<std::string, TrajectoryError> out;
+  for (const std::string& name : conditionNames()) {
+    std::vector<FrameError> frames;
+    for (size_t i = 0; i < t.frames.size(); ++i) {
+      if (t.frame_tags[i].count(name)) frames.push_back(t.frames[i]);
+    }
+    if (!frames.empty()) out[name] = errorFromFrames(frames);
+  }
+  return out;
+}
+
+TrajectoryView makeView(const io::Sequence& seq, const VariantRun& run, double t0, double t1) {
+  TrajectoryView v;
+  v.name =
+      std::filesystem::path(seq.dir()).filename().string() + " (" + run.tally->spec.title + ")";
+  for (const auto& p : seq.groundTruth()) {
+    if (p.timestamp < t0 - 1e-6 || p.timestamp > t1 + 1e-6) continue;
+    v.truth_x.push_back(p.pose.translation().x());
+    v.truth_y.push_back(p.pose.translation().y());
+  }
+  for (const auto& p : run.estimate) {
+    v.estimate_x.push_back(p.pose.translation().x());
+    v.estimate_y.push_back(p.pose.translation().y());
+  }
+  for (const map::Landmark& l : seq.map().landmarks()) {
+    if (!run.levels.empty() && !run.levels.count(l.level)) continue;
+    v.landmark_x.push_back(l.position.x());
+    v.landmark_y.push_back(l.position.y());
+    v.landmark_text.push_back(l.cls == map::TextClass::kParkingNumber ? l.text : "");
+  }
+  return v;
+}
+
+}  // namespace parkloc::eval::detail

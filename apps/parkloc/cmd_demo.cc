@@ -8,7 +8,7 @@
 
 #include "apps/parkloc/command.h"
 #include "apps/parkloc/config_args.h"
-#include "apps/parkloc/eval_common.h"
+#include "apps/parkloc/progress_line.h"
 #include "eval/dataset.h"
 #include "eval/evaluation.h"
 #include "eval/report.h"

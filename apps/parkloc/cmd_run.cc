@@ -6,7 +6,7 @@
 
 #include "apps/parkloc/command.h"
 #include "apps/parkloc/config_args.h"
-#include "apps/parkloc/eval_common.h"
+#include "apps/parkloc/progress_line.h"
 #include "eval/dataset.h"
 #include "io/sequence.h"
 #include "run/sequence_runner.h"
@@ -29,10 +29,10 @@ struct RunArgs {
 
 void run(const RunArgs& a) {
   using namespace parkloc;
+  const config::Config config = a.config.load();  // a bad file fails before any work
   const io::Sequence sequence(a.sequence, a.calib, a.map, a.odometry);
   for (const auto& w : sequence.warnings()) std::cerr << "parkloc: warning: " << w << "\n";
 
-  const config::Config config = a.config.load();
   run::RunOptions options;
   options.pipeline = config.pipeline;
   if (a.paper) options.pipeline = localize::PipelineOptions::paper(options.pipeline);

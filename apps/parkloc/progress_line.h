@@ -1,5 +1,5 @@
 #pragma once
-// Shared by `parkloc eval`, `demo` and `bench`: a progress line on stderr.
+// The progress line on stderr of the long commands (eval, run, demo, bench).
 #include <fmt/format.h>
 
 #include <chrono>

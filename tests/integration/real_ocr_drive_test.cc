@@ -3,7 +3,7 @@
 // classifiers `parkloc run` uses by default) and default pipeline options (the drive's level set,
 // as `parkloc run` does), and the estimated poses are compared with the drive's ground truth.
 //
-// Slow (rendering plus real OCR, about a minute on two cores): labelled `slow` in CTest so the
+// Slow (rendering plus real OCR, 10-60 s on two cores): labelled `slow` in CTest so the
 // sanitizer run (`make test-asan`, -LE slow) skips it; `make test` runs it.
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -12,14 +12,14 @@ build="${1:?usage: fuzz/run.sh BUILD_DIR SECONDS [TARGET...]}"
 seconds="${2:?usage: fuzz/run.sh BUILD_DIR SECONDS [TARGET...]}"
 shift 2
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(calibration map tum odometry labels image scenario)
+[ ${#targets[@]} -eq 0 ] && targets=(calibration map tum odometry labels image scenario config)
 runs="${FUZZ_RUNS:-0}"
 work="$build/fuzz-work"
 mkdir -p "$work"
 
 dict_of() {
   case "$1" in
-    calibration | scenario) echo "$here/yaml.dict" ;;
+    calibration | scenario | config) echo "$here/yaml.dict" ;;
     map | labels) echo "$here/geojson.dict" ;;
   esac
 }

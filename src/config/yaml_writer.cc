@@ -12,6 +12,8 @@ std::string yamlString(const std::string& s) {
   out << YAML::DoubleQuoted << s;
   const std::string quoted = out.c_str();
   if (s.empty()) return quoted;
+  for (const char c : s)  // plain only for printable ASCII
+    if (c < 0x20 || c > 0x7e) return quoted;
   // Plain when it parses back to itself as a string and not as anything else.
   try {
     const YAML::Node n = YAML::Load(s);

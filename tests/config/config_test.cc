@@ -98,6 +98,10 @@ TEST(Config, BadFilesAreRejectedByKey) {
   expectError("spotter:\n  reading:\n    reread_margins: [[1, 2, 3]]\n", "number pairs");
   expectError("[1, 2]\n", "mapping");
   expectError("a: [\n", "not YAML");
+  expectError("models:\n  dir: \"a\\x01b\"\n", "printable UTF-8");
+  expectError("models:\n  dir: a\xff\n", "my.yaml");  // a broken byte: not YAML, or not text
+  expectError("? [a, b]\n: 1\n", "unknown option '([a, b])'");
+  expectError("pipeline:\n  solver:\n    pixel_sigma: {a: 1, b: 2}\n", "not '{a: 1, b: 2}'");
 }
 
 TEST(Config, TheModelFolderResolvesFromTheConfigThenTheEnvironment) {

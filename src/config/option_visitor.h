@@ -24,8 +24,7 @@ class OptionVisitor {
   virtual void value(const char* key, std::string& v, const char* why) = 0;
   virtual void value(const char* key, std::vector<double>& v, const char* why) = 0;
   // A list of factor pairs, written [[a, b], ...].
-  virtual void value(const char* key, std::vector<std::pair<float, float>>& v,
-                     const char* why) = 0;
+  virtual void value(const char* key, std::vector<std::pair<float, float>>& v, const char* why) = 0;
 
   // A nested mapping: `body` describes its fields.
   virtual void section(const char* key, const char* why, const std::function<void()>& body) = 0;
@@ -47,8 +46,7 @@ class OptionVisitor {
   // An optional sub-struct: a section with `enabled`, whose other fields describe the struct
   // (the defaults of `T` when it is off).
   template <typename T, typename Describe>
-  void optionalSection(const char* key, std::optional<T>& v, const char* why,
-                       Describe&& describe) {
+  void optionalSection(const char* key, std::optional<T>& v, const char* why, Describe&& describe) {
     section(key, why, [&] {
       bool enabled = v.has_value();
       T fields = v.value_or(T{});

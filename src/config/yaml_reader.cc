@@ -39,7 +39,11 @@ void collectKeys(const YAML::Node& node, const std::string& prefix,
 bool printableUtf8(const std::string& s) {
   for (size_t i = 0; i < s.size();) {
     const auto c = static_cast<unsigned char>(s[i]);
-    const size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    const size_t n = c < 0x80           ? 1
+                     : (c >> 5) == 0x6  ? 2
+                     : (c >> 4) == 0xe  ? 3
+                     : (c >> 3) == 0x1e ? 4
+                                        : 0;
     if (n == 0 || i + n > s.size()) return false;
     uint32_t cp = n == 1 ? c : c & (0x7f >> n);
     for (size_t k = 1; k < n; ++k) {
@@ -59,8 +63,7 @@ bool printableUtf8(const std::string& s) {
 
 }  // namespace
 
-YamlReader::YamlReader(YAML::Node root, std::string where)
-    : where_(std::move(where)), root_(root) {
+YamlReader::YamlReader(YAML::Node root, std::string where) : where_(std::move(where)), root_(root) {
   if (root.IsNull()) root_ = YAML::Node(YAML::NodeType::Map);
   if (!root_.IsMap()) throw InputError(where_ + ": expected a mapping of option sections");
   stack_.push_back(root_);
@@ -154,8 +157,8 @@ void YamlReader::value(const char* key, std::vector<std::pair<float, float>>& v,
     }
   }
   if (!ok)
-    throw InputError(where_ + ": option '" + path(key) +
-                     "' must be a list of number pairs, not '" + shown(node) + "'");
+    throw InputError(where_ + ": option '" + path(key) + "' must be a list of number pairs, not '" +
+                     shown(node) + "'");
   v = parsed;
 }
 
@@ -179,8 +182,7 @@ void YamlReader::section(const char* key, const char*, const std::function<void(
   YAML::Node node = find(key);
   if (node.IsDefined() && !node.IsNull() && !node.IsMap())
     throw InputError(where_ + ": option section '" + path(key) + "' must be a mapping");
-  stack_.push_back(node.IsDefined() && node.IsMap() ? node
-                                                    : YAML::Node(YAML::NodeType::Undefined));
+  stack_.push_back(node.IsDefined() && node.IsMap() ? node : YAML::Node(YAML::NodeType::Undefined));
   prefix_.emplace_back(key);
   body();
   prefix_.pop_back();

@@ -24,8 +24,7 @@ class YamlReader : public OptionVisitor {
   void value(const char* key, float& v, const char* why) override;
   void value(const char* key, std::string& v, const char* why) override;
   void value(const char* key, std::vector<double>& v, const char* why) override;
-  void value(const char* key, std::vector<std::pair<float, float>>& v,
-             const char* why) override;
+  void value(const char* key, std::vector<std::pair<float, float>>& v, const char* why) override;
   void section(const char* key, const char* why, const std::function<void()>& body) override;
 
   // Throws InputError for the first key of the file that no walk visited.

@@ -10,33 +10,7 @@ namespace parkloc::config {
 std::string yamlString(const std::string& s) {
   YAML::Emitter out;
   out << YAML::DoubleQuoted << s;
-  const std::string quoted = out.c_str();
-  if (s.empty()) return quoted;
-  for (const char c : s)  // plain only for printable ASCII
-    if (c < 0x20 || c > 0x7e) return quoted;
-  // Plain when it parses back to itself as a string and not as anything else.
-  try {
-    const YAML::Node n = YAML::Load(s);
-    if (n.IsScalar() && n.Tag() != "!" && n.as<std::string>() == s) {
-      bool number_like = false;
-      try {
-        (void)n.as<double>();
-        number_like = true;
-      } catch (const YAML::Exception&) {
-      }
-      bool bool_like = false;
-      try {
-        (void)n.as<bool>();
-        bool_like = true;
-      } catch (const YAML::Exception&) {
-      }
-      if (!number_like && !bool_like && s.find_first_of(":#'\"{}[],&*!|>%@`") == std::string::npos &&
-          s.front() != ' ' && s.back() != ' ' && s != "~" && s != "null")
-        return s;
-    }
-  } catch (const YAML::Exception&) {
-  }
-  return quoted;
+  return out.c_str();
 }
 
 void YamlWriter::comment(const std::string& lines) {
@@ -56,18 +30,19 @@ void YamlWriter::value(const char* key, bool& v, const char* why) {
 void YamlWriter::value(const char* key, int& v, const char* why) {
   line(key, fmt::format("{}", v), why);
 }
-// The shortest text that reads back as the same number (fmt's default), with a decimal
-// point so that YAML readers see a float.
-void YamlWriter::value(const char* key, double& v, const char* why) {
+// The shortest text that reads back as the same number of its type (fmt's default), with a
+// decimal point so that YAML readers see a float.
+namespace {
+template <typename Real>
+std::string realText(Real v) {
   std::string s = fmt::format("{}", v);
   if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-  line(key, s, why);
+  return s;
 }
-void YamlWriter::value(const char* key, float& v, const char* why) {
-  std::string s = fmt::format("{}", v);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-  line(key, s, why);
-}
+}  // namespace
+
+void YamlWriter::value(const char* key, double& v, const char* why) { line(key, realText(v), why); }
+void YamlWriter::value(const char* key, float& v, const char* why) { line(key, realText(v), why); }
 void YamlWriter::value(const char* key, std::string& v, const char* why) {
   line(key, yamlString(v), why);
 }
@@ -77,8 +52,7 @@ void YamlWriter::value(const char* key, std::vector<double>& v, const char* why)
   line(key, s + "]", why);
 }
 
-void YamlWriter::value(const char* key, std::vector<std::pair<float, float>>& v,
-                       const char* why) {
+void YamlWriter::value(const char* key, std::vector<std::pair<float, float>>& v, const char* why) {
   std::string s = "[";
   for (size_t i = 0; i < v.size(); ++i)
     s += fmt::format("{}[{}, {}]", i ? ", " : "", v[i].first, v[i].second);

@@ -17,8 +17,7 @@ class YamlWriter : public OptionVisitor {
   void value(const char* key, float& v, const char* why) override;
   void value(const char* key, std::string& v, const char* why) override;
   void value(const char* key, std::vector<double>& v, const char* why) override;
-  void value(const char* key, std::vector<std::pair<float, float>>& v,
-             const char* why) override;
+  void value(const char* key, std::vector<std::pair<float, float>>& v, const char* why) override;
   void section(const char* key, const char* why, const std::function<void()>& body) override;
 
   // Lines written so far.
@@ -38,7 +37,7 @@ class YamlWriter : public OptionVisitor {
   int depth_ = 0;
 };
 
-// A YAML scalar for `s`: plain when YAML reads it back as the same string, else quoted.
+// A YAML scalar for `s`: double-quoted, with YAML's escapes, so it reads back as the same string.
 std::string yamlString(const std::string& s);
 
 }  // namespace parkloc::config

@@ -20,6 +20,7 @@
 #include "eval/tables.h"
 #include "io/sequence.h"
 #include "run/oracle_source.h"
+#include "run/sequence_runner.h"
 
 namespace parkloc::eval {
 namespace {
@@ -92,16 +93,6 @@ void countAnomalyFilter(const std::vector<localize::Association>& associations,
       afm_counts.anomalies_rejected += a.verdict != V::kAccepted;
     }
   }
-}
-
-// The odometry samples in (after, until].
-std::vector<OdometrySample> odometrySlice(const std::vector<OdometrySample>& all,
-                                              double after, double until) {
-  std::vector<OdometrySample> out;
-  auto it = std::upper_bound(all.begin(), all.end(), after,
-                             [](double t, const OdometrySample& s) { return t < s.timestamp; });
-  for (; it != all.end() && it->timestamp <= until; ++it) out.push_back(*it);
-  return out;
 }
 
 std::optional<geometry::Pose2> truthAt(const std::vector<io::StampedPose>& truth, double t,
@@ -188,7 +179,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     for (size_t i = 0; i < frames; ++i) {
       const double t = seq.timestamps()[i];
       const std::vector<OdometrySample> odometry =
-          odometrySlice(seq.odometry(), previous_time, t);
+          run::odometryBetween(seq.odometry(), previous_time, t);
       previous_time = t;
 
       // Read every camera once; spot the full frame once for all paper variants.
@@ -243,8 +234,8 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
               in.instances = c.full_frame;
               break;
             case Source::kOracle:
-              in.instances = c.labels ? run::oracleInstances(*c.labels)
-                                      : std::vector<ocr::TextInstance>{};
+              in.instances =
+                  c.labels ? run::oracleInstances(*c.labels) : std::vector<ocr::TextInstance>{};
               break;
             case Source::kOdometry:
               break;

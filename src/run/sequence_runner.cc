@@ -48,8 +48,9 @@ std::optional<geometry::Pose2> truthAt(const std::vector<io::StampedPose>& truth
 std::vector<OdometrySample> odometryBetween(const std::vector<OdometrySample>& all, double after,
                                             double until) {
   std::vector<OdometrySample> out;
-  for (const auto& s : all)
-    if (s.timestamp > after && s.timestamp <= until) out.push_back(s);
+  auto it = std::upper_bound(all.begin(), all.end(), after,
+                             [](double t, const OdometrySample& s) { return t < s.timestamp; });
+  for (; it != all.end() && it->timestamp <= until; ++it) out.push_back(*it);
   return out;
 }
 

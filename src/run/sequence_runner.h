@@ -51,7 +51,8 @@ struct RunSummary {
 // The ground-truth pose at time t, linearly interpolated; empty outside the trajectory.
 std::optional<geometry::Pose2> truthAt(const std::vector<io::StampedPose>& truth, double t);
 
-// The odometry samples with timestamp in (after, until].
+// The odometry samples with timestamp in (after, until]; `all` in time order, as io::loadOdometry
+// gives it.
 std::vector<OdometrySample> odometryBetween(const std::vector<OdometrySample>& all, double after,
                                             double until);
 

@@ -24,6 +24,7 @@
 #include "io/sequence.h"
 #include "localize/pipeline.h"
 #include "ocr/ppocr/pp_ocr_spotter.h"
+#include "run/sequence_runner.h"
 #include "sim/dataset_writer.h"
 #include "sim/scenario.h"
 
@@ -35,13 +36,6 @@ namespace fs = std::filesystem;
 // Frame sets of the drive (10 Hz): long enough for the search, the first fix and several
 // turns of the tracked phase (full-frame sweeps and map-guided reads).
 constexpr int kFrames = 80;
-
-// The drive's ground-truth pose stamped within 10 ms of t (poses.tum holds one per frame set).
-std::optional<geometry::Pose2> truthAt(const io::Sequence& sequence, double t) {
-  for (const auto& p : sequence.groundTruth())
-    if (std::fabs(p.timestamp - t) <= 0.01) return geometry::Pose2::fromRigid3(p.pose);
-  return std::nullopt;
-}
 
 class TempDir {
  public:
@@ -92,8 +86,7 @@ TEST(RealOcrDrive, LocalizesTheTestDriveWithinTheHeadlineBounds) {
   for (size_t i = 0; i < sequence.timestamps().size(); ++i) {
     localize::FrameInput input;
     input.timestamp = sequence.timestamps()[i];
-    for (const auto& s : sequence.odometry())
-      if (s.timestamp > previous && s.timestamp <= input.timestamp) input.odometry.push_back(s);
+    input.odometry = run::odometryBetween(sequence.odometry(), previous, input.timestamp);
     previous = input.timestamp;
     for (const std::string& camera : sequence.cameras())
       input.cameras.push_back({camera, sequence.loadImage(i, camera), std::nullopt});
@@ -103,7 +96,8 @@ TEST(RealOcrDrive, LocalizesTheTestDriveWithinTheHeadlineBounds) {
     if (!result.has_pose) continue;
     first_fix = std::min(first_fix, i);
     ++posed_after_first_fix;
-    const std::optional<geometry::Pose2> truth = truthAt(sequence, input.timestamp);
+    const std::optional<geometry::Pose2> truth =
+        run::truthAt(sequence.groundTruth(), input.timestamp);
     ASSERT_TRUE(truth) << "no ground truth at t = " << input.timestamp;
     errors_m.push_back((result.pose.translation() - truth->translation()).norm());
   }

@@ -7,7 +7,6 @@
 #include "apps/parkloc/command.h"
 #include "apps/parkloc/config_args.h"
 #include "apps/parkloc/progress_line.h"
-#include "eval/dataset.h"
 #include "io/sequence.h"
 #include "run/sequence_runner.h"
 
@@ -40,12 +39,8 @@ void run(const RunArgs& a) {
   if (a.no_mcrp) options.pipeline.paper_modules.mcrp = false;
   if (a.no_mcap) options.pipeline.paper_modules.mcap = false;
   if (a.no_odometry) options.pipeline.motion.use_odometry = false;
-  // Parking numbers repeat on every level of a garage: the drive's level comes from
-  // --level, else the configuration, else the sequence's meta.json, else the pipeline votes.
-  if (!a.level.empty())
-    options.pipeline.level = a.level;
-  else if (options.pipeline.level.empty())
-    options.pipeline.level = eval::sequenceLevel(sequence.metaJson());
+  // Without a hint (--level, or the configuration's) the pipeline estimates the level.
+  if (!a.level.empty()) options.pipeline.level = a.level;
   options.oracle = a.oracle;
   options.max_frames = a.max_frames;
   options.out_dir = a.out;
@@ -103,7 +98,7 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
                   "Wheel odometry CSV (default SEQUENCE/odometry.csv)");
   cmd->add_option("--video", args->video, "Write an annotated mp4 here");
   cmd->add_option("--level", args->level,
-                  "Garage level of the drive (default: meta.json \"level\", else voted)");
+                  "A hint: the garage level the drive starts on (default: estimated)");
   cmd->add_flag("--oracle", args->oracle, "Text from the ground-truth labels (oracle OCR)");
   cmd->add_flag("--paper", args->paper,
                 "The paper's pipeline: text centre + homography, AFM, MCRP, MCAP, no odometry");

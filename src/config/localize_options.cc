@@ -70,6 +70,29 @@ void describe(OptionVisitor& v, localize::ReadingOptions& o) {
           "ask the second recognizer on full frames (costs 30-50 ms at p99, moved no error)");
 }
 
+void describe(OptionVisitor& v, localize::LevelOptions& o) {
+  v.value("decided_probability", o.decided_probability, "a level this probable is decided");
+  v.value("sign_ratio", o.sign_ratio,
+          "likelihood ratio of one reading of a level sign (\"B2\") for its level");
+  v.value("text_ratio", o.text_ratio,
+          "likelihood ratio of one reading of a text for the levels that have it");
+  v.value("place_ratio", o.place_ratio,
+          "likelihood ratio of a gated text for the levels that have it at that place");
+  v.value("max_frame_ratio", o.max_frame_ratio,
+          "no frame set moves the odds between two levels by more than this");
+  v.value("ramp_after_s", o.ramp_after_s,
+          "a stretch with no text associated for this long (s) may be a ramp");
+  v.value("change_rate_per_s", o.change_rate_per_s,
+          "level changes per second on such a stretch");
+  v.value("min_probability", o.min_probability,
+          "no level's probability falls below this (readings are not independent)");
+  v.value("hint_probability", o.hint_probability, "the probability a level hint starts with");
+  v.value("shared_place_m", o.shared_place_m,
+          "landmarks of two levels this close (same surface and direction) are one place");
+  v.value("min_recognition_score", o.min_recognition_score,
+          "readings with a lower score say nothing of the level");
+}
+
 void describe(OptionVisitor& v, localize::AssociationOptions& o) {
   v.value("use_parking_numbers", o.use_parking_numbers, "parking numbers may fix the pose");
   v.value("use_pillar_text", o.use_pillar_text, "pillar texts may fix the pose");
@@ -150,7 +173,9 @@ void describe(OptionVisitor& v, localize::PaperPipelineOptions& o) {
 void describe(OptionVisitor& v, localize::PipelineOptions& o) {
   v.value("paper_mode", o.paper_mode,
           "run the paper's pipeline instead of parkloc's (the CLI's --paper sets the rest)");
-  v.value("level", o.level, "the map level driven on (\"\": voted from the texts seen)");
+  v.value("level", o.level,
+          "a hint: the map level the drive starts on (\"\": estimated from the texts seen)");
+  v.section("levels", "the level estimate", [&] { describe(v, o.levels); });
   v.section("motion", "odometry intake and prediction", [&] { describe(v, o.motion); });
   v.section("ekf", "the filter's noise model", [&] { describe(v, o.ekf); });
   v.section("reading", "what to read each frame set", [&] { describe(v, o.reading); });

@@ -148,7 +148,6 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     if (frames == 0) continue;
     const double t0 = seq.timestamps().front(), t1 = seq.timestamps()[frames - 1];
 
-    const std::string level = options.level_from_meta ? sequenceLevel(seq.metaJson()) : "";
     std::vector<VariantRun> runs;
     for (VariantTally& tally : tallies) {
       VariantRun run;
@@ -158,11 +157,8 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         if (!start) continue;  // no ground truth to start from
         run.dead_reckoning = std::make_unique<DeadReckoning>(*start, t0);
       } else {
-        localize::PipelineOptions pipeline_options = tally.spec.options;
-        if (pipeline_options.level.empty()) pipeline_options.level = level;
-        if (!level.empty()) run.levels.insert(level);
         run.pipeline = std::make_unique<localize::Pipeline>(
-            seq.rig(), seq.map(), pipeline_options,
+            seq.rig(), seq.map(), tally.spec.options,
             tally.spec.source == Source::kSpotter ? spotter : nullptr);
       }
       runs.push_back(std::move(run));
@@ -176,6 +172,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     double previous_time = -std::numeric_limits<double>::infinity();
     const std::string stage = fmt::format("sequence {}/{} {}", s + 1, sequences.size(), name);
     std::vector<std::set<std::string>> tags_by_frame;
+    const std::string start_level = sequenceLevel(seq.metaJson());
     for (size_t i = 0; i < frames; ++i) {
       const double t = seq.timestamps()[i];
       const std::vector<OdometrySample> odometry =
@@ -206,6 +203,14 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         cameras.push_back(std::move(c));
       }
       tags_by_frame.push_back(tags);
+      // What scores the level estimate: the true level, and a text that tells it in view.
+      std::vector<io::ImageLabels> labels;
+      for (const CameraData& c : cameras)
+        if (c.labels) labels.push_back(*c.labels);
+      LevelFrame level_truth;
+      level_truth.timestamp = t;
+      level_truth.truth = start_level;
+      level_truth.telling_text_in_view = tellingTextInView(seq.map(), labels);
 
       for (VariantRun& run : runs) {
         VariantTally& tally = *run.tally;
@@ -272,6 +277,11 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
                                   st.spotting_ms / 1000.0 / static_cast<double>(full_frames));
           }
         }
+        LevelFrame level = level_truth;
+        level.has_pose = result.has_pose;
+        level.level = result.level;
+        level.decided = result.level_decided;
+        run.level_frames.push_back(level);
         if (result.has_pose) {
           run.fixed = true;
           ++tally.frames_with_pose;
@@ -296,6 +306,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
 
     // Errors of this drive, each frame tagged with its conditions.
     for (VariantRun& run : runs) {
+      if (run.pipeline) run.tally->levels.add(scoreLevels(run.level_frames));
       const TrajectoryError e = trajectoryError(run.estimate, seq.groundTruth());
       for (const FrameError& f : e.frames) {
         const auto it = std::lower_bound(seq.timestamps().begin(),

@@ -30,9 +30,6 @@ struct EvaluationOptions {
   size_t max_frames_per_sequence = 0;         // 0: all
   size_t trajectory_views = 2;                // drives drawn in the report
   localize::PipelineOptions parkloc_options;  // for parkloc and the oracle
-  // Tell every pipeline the drive's level (meta.json "level"): parking numbers repeat on
-  // each level of a garage, and a drive stays on one.
-  bool level_from_meta = true;
   OcrEvaluationOptions ocr_metrics;
   ProgressCallback progress;
   std::string title = "parkloc evaluation";

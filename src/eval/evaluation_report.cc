@@ -81,6 +81,12 @@ EvaluationReport assembleReport(const EvaluationOptions& options, const Evaluati
     }
     report.tables.push_back(latencyTable(rows));
   }
+  {
+    std::vector<VariantResult> rows;
+    for (const std::string& key : {std::string("parkloc"), std::string("oracle")})
+      if (auto r = result(key)) rows.push_back(*r);
+    report.tables.push_back(levelTable(rows));
+  }
   for (const VariantTally& t : tallies) report.variants.push_back(toResult(t));
   report.notes.push_back(fmt::format(
       "{} sequences, {} frame sets. Position error: evo-style APE (translation, no alignment, "

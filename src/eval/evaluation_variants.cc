@@ -62,6 +62,7 @@ VariantResult toResult(const VariantTally& t) {
   r.frames_with_pose = t.frames_with_pose;
   r.frames_after_first_fix = t.after_fix;
   r.frames_with_pose_after_first_fix = t.with_pose_after_fix;
+  r.levels = t.levels;
   return r;
 }
 

@@ -11,6 +11,7 @@
 #include "eval/dead_reckoning.h"
 #include "eval/evaluation.h"
 #include "eval/latency.h"
+#include "eval/level_metrics.h"
 #include "eval/ocr_metrics.h"
 #include "eval/report.h"
 #include "eval/tables.h"
@@ -40,6 +41,7 @@ struct VariantTally {
   std::vector<std::set<std::string>> frame_tags;
   std::vector<FrameTiming> timings;
   size_t frames_total = 0, frames_with_pose = 0, after_fix = 0, with_pose_after_fix = 0;
+  LevelScore levels;
 };
 
 // One variant's state within a sequence.
@@ -49,6 +51,7 @@ struct VariantRun {
   std::unique_ptr<DeadReckoning> dead_reckoning;
   std::vector<io::StampedPose> estimate;
   std::set<std::string> levels;  // levels of the landmarks it used (for the map plot)
+  std::vector<LevelFrame> level_frames;
   bool fixed = false;
 };
 

@@ -37,14 +37,13 @@ OcrEvaluation evaluateOcr(const std::vector<std::string>& sequences, ocr::TextSp
     if (const auto it = options.estimated_poses.find(name);
         options.use_lexicon && it != options.estimated_poses.end())
       prediction.emplace(it->second, seq.odometry());
-    const std::string level = sequenceLevel(seq.metaJson());
     request.placement_radius_m = options.placement_radius_m;
     for (size_t i = 0; i < frames; ++i) {
       request.placed_floor_texts.clear();
       if (prediction)
         if (const auto pose = prediction->at(seq.timestamps()[i]))
           request.placed_floor_texts =
-              map::placeFloorTexts(seq.map(), *pose, options.placement_range_m, level);
+              map::placeFloorTexts(seq.map(), *pose, options.placement_range_m, "");
       for (const std::string& camera : seq.cameras()) {
         const std::optional<io::ImageLabels> labels = seq.loadLabels(i, camera);
         if (!labels) continue;  // no ground truth: nothing to score

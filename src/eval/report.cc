@@ -168,6 +168,16 @@ nlohmann::json resultsJson(const EvaluationReport& r) {
   nlohmann::json latency = summaryJson(m.latency.total_ms, 1.0);
   for (const auto& [stage, s] : m.latency.stage_ms) latency["stages"][stage] = summaryJson(s, 1.0);
   j["latency_ms"] = latency;
+  const LevelScore& l = m.levels;
+  j["level"] = {{"frames", l.frames},
+                {"with_pose", l.with_pose},
+                {"decided", l.decided},
+                {"decided_right", l.decided_right},
+                {"right_where_decided", l.rightWhereDecided()},
+                {"decision_delays_s", l.decision_delays_s},
+                {"change_delays_s", l.change_delays_s},
+                {"changes", l.changes},
+                {"stretches_never_decided", l.stretches_never_decided}};
   if (r.ocr) {
     j["ocr"] = ocrEvaluationJson(*r.ocr);
   } else {
@@ -206,6 +216,10 @@ std::string resultsMarkdown(const EvaluationReport& r) {
       m.title, m.frames, m.frames_with_pose, m.error.position_m.mean * 100,
       m.error.position_m.p95 * 100, m.error.position_m.max * 100, m.error.abs_yaw_deg.mean,
       m.latency.total_ms.median, m.latency.total_ms.p99);
+  if (m.levels.frames > 0)
+    s += fmt::format(
+        "No level given: the level decided on {} of {} frame sets, right on {} of those.\n\n",
+        m.levels.decided, m.levels.frames, m.levels.decided_right);
   for (const Table& t : r.tables) s += tableMarkdown(t);
   for (const std::string& n : r.notes) s += "- " + n + "\n";
   return s;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "eval/latency.h"
+#include "eval/level_metrics.h"
 #include "eval/ocr_metrics.h"
 #include "eval/trajectory_metrics.h"
 
@@ -42,6 +43,7 @@ struct VariantResult {
   size_t frames_with_pose = 0;  // frame sets that produced a pose
   size_t frames_after_first_fix = 0;
   size_t frames_with_pose_after_first_fix = 0;
+  LevelScore levels;  // the level estimate against the true level (pipelines only)
 };
 
 // One drive drawn over its map: landmarks, true and estimated path.

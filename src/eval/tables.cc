@@ -323,4 +323,35 @@ Table latencyTable(const std::vector<VariantResult>& variants) {
   return t;
 }
 
+Table levelTable(const std::vector<VariantResult>& variants) {
+  Table t;
+  t.key = "level";
+  t.title = "Level estimate (no level given)";
+  t.caption =
+      "Decided: the level's probability reached levels.decided_probability. Time to decide: "
+      "from the first frame set with a legible level sign or level-unique text in view (the "
+      "labels) to the first decided on the right level; median / max over the drives "
+      "(first level) and over the level changes; never: such a text was in view and the "
+      "stretch ended undecided.";
+  t.header = {"Method", "Frame sets", "With a pose", "Decided", "Right where decided",
+              "Time to decide (s)", "Time to follow a change (s)", "Never decided"};
+  const auto delays = [](const std::vector<double>& d) -> TableCell {
+    if (d.empty()) return TableCell("-");
+    const Summary s = summarize(d);
+    return TableCell(fmt::format("{:.1f} / {:.1f} (n={})", s.median, s.max, s.count));
+  };
+  for (const VariantResult& v : variants) {
+    const LevelScore& l = v.levels;
+    if (l.frames == 0) continue;
+    const double n = static_cast<double>(l.frames);
+    t.rows.push_back({v.title, TableCell::number(n, 0),
+                      TableCell::percent(static_cast<double>(l.with_pose) / n),
+                      TableCell::percent(static_cast<double>(l.decided) / n),
+                      TableCell::percent(l.rightWhereDecided()), delays(l.decision_delays_s),
+                      delays(l.change_delays_s),
+                      TableCell::number(static_cast<double>(l.stretches_never_decided), 0)});
+  }
+  return t;
+}
+
 }  // namespace parkloc::eval

@@ -70,4 +70,9 @@ Table table5(const std::vector<VariantResult>& variants);
 // Latency per stage (median / p95 / p99 / max, ms) of each variant, and the whole frame set.
 Table latencyTable(const std::vector<VariantResult>& variants);
 
+// The level estimate of each pipeline against the true level: frame sets with a pose and with
+// the level decided, right where decided, and the time to decide after the first text that
+// tells the level, on the first level of a drive and after a level change.
+Table levelTable(const std::vector<VariantResult>& variants);
+
 }  // namespace parkloc::eval

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "localize/association_gate.h"
+#include "localize/shared_places.h"
 
 namespace parkloc::localize {
 namespace {
@@ -41,7 +42,7 @@ void Associator::reset() { afm_ = BoxPlotFilter(afmOptions(modules_)); }
 
 AssociatedObservations Associator::associate(const std::vector<CameraResult>& cameras,
                                              const std::vector<bool>& supplied, bool tracking,
-                                             const std::string& level, const PoseEkf& ekf,
+                                             const LevelEstimate& level, const PoseEkf& ekf,
                                              std::vector<Association>& associations) {
   AssociatedObservations out;
   // The box plot (paper 3.3) assumes the numbers in view change slowly; after a turn into
@@ -80,7 +81,11 @@ AssociatedObservations Associator::associate(const std::vector<CameraResult>& ca
         // (docs/OCR.md): only the pose gate may vouch for one.
         a.verdict = AssociationVerdict::kUnconfirmed;
       } else {
-        const auto candidates = map_.findByText(instance.text, level);
+        std::vector<const map::Landmark*> candidates =
+            map_.findByText(instance.text, level.restriction());
+        if (!level.belief().decided)
+          candidates =
+              onePerPlace(candidates, level.belief().level, level.options().shared_place_m);
         const auto observe = [&](const map::Landmark& landmark) {
           LandmarkObservation o;
           o.camera = static_cast<int>(c);

@@ -2,7 +2,8 @@
 // Stage 4b of the pipeline, association: each text instance to a map landmark, or the
 // reason it is not used (AssociationVerdict). In order: the text class, the recognition
 // score, the AFM box plot (paper section 3.3), partial and unconfirmed readings, exact
-// matching against the map's texts on the level driven on (section 3.3), and, while
+// matching against the map's texts on the level driven on (section 3.3; every level while the
+// level is undecided, a place the levels share counting once: shared_places.h), and, while
 // tracking, the pose gate (association_gate.h): of the landmarks that carry the text (pillar
 // faces, levels), the one that fits the prediction best, reading the right way round.
 #include <string>
@@ -14,6 +15,7 @@
 #include "localize/floor_heights.h"
 #include "localize/frame_types.h"
 #include "localize/landmark_observation.h"
+#include "localize/level_estimate.h"
 #include "localize/paper_modules.h"
 #include "localize/pose_ekf.h"
 #include "map/hd_map.h"
@@ -60,7 +62,7 @@ class Associator {
   // filter's pose gates the associations.
   AssociatedObservations associate(const std::vector<CameraResult>& cameras,
                                    const std::vector<bool>& supplied, bool tracking,
-                                   const std::string& level, const PoseEkf& ekf,
+                                   const LevelEstimate& level, const PoseEkf& ekf,
                                    std::vector<Association>& associations);
 
  private:

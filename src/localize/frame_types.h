@@ -94,7 +94,7 @@ struct CameraResult {
 struct StageTimings {
   double roi_ms = 0.0;          // read planning: map-guided regions, budget, reads or fits
   double spotting_ms = 0.0;     // OCR, all cameras (0 when every camera brought instances)
-  double association_ms = 0.0;  // level vote, exact matching, AFM, gating
+  double association_ms = 0.0;  // level estimate, exact matching, AFM, gating
   double solver_ms = 0.0;       // SE(2) solve or paper projection + averaging
   double filter_ms = 0.0;       // EKF predict + update
   double total_ms = 0.0;
@@ -117,6 +117,11 @@ struct FrameResult {
   bool solver_converged = false;
   int solver_iterations = 0;
   bool reinitialised = false;  // the filter was reset from the solver this frame
+  // The level driven on (level_estimate.h): the most probable one, its probability, and
+  // whether it is decided. An undecided level with a pose: the levels share the places seen.
+  std::string level;
+  double level_probability = 0.0;
+  bool level_decided = false;
 
   std::vector<CameraResult> cameras;
   std::vector<Association> associations;

@@ -1,7 +1,6 @@
 #include "localize/pipeline.h"
 
 #include "localize/floor_heights.h"
-#include "localize/level_vote.h"
 #include "localize/search_window.h"
 #include "localize/spotting.h"
 #include "localize/stage_clock.h"
@@ -28,7 +27,7 @@ struct Pipeline::Impl {
   PoseEkf ekf;
   MotionPrediction motion;
   ReadPlanner reading;
-  LevelVote level;
+  LevelEstimate level;
   Associator associator;
   ParklocMeasurement measurement;
   TrackLifecycle lifecycle;
@@ -42,8 +41,8 @@ struct Pipeline::Impl {
         floors(map),
         ekf(o.ekf),
         motion(o.motion, o.paper_mode && o.paper_pipeline.heading == PaperHeadingSource::kOdometry),
-        reading(rig, map, floors, o.reading, o.level, o.reading.map_guided && !o.paper_mode),
-        level(o.level),
+        reading(rig, map, floors, o.reading, o.reading.map_guided && !o.paper_mode),
+        level(map, o.levels, o.level),
         associator(rig, map, floors, o.association, o.paper_modules, o.measurement.polygon_model,
                    o.paper_mode),
         measurement(rig, o.solver, o.measurement, o.tracking),
@@ -74,6 +73,7 @@ struct Pipeline::Impl {
     //    search window's texts follow the vehicle.
     const Stopwatch motion_time;
     const FrameMotion moved = motion.advance(frame, ekf, result.warnings);
+    level.predict(frame.timestamp);
     if (options.paper_mode) paper.integrateOdometryYaw(moved);
     if (!lifecycle.searchWindow().empty())
       lifecycle.searchWindow().advance(moved.sincePreviousFrame());
@@ -82,7 +82,7 @@ struct Pipeline::Impl {
 
     // 2. Read planning: map-guided regions while tracking, the full frame now and then.
     const Stopwatch planning_time;
-    ReadPlan plan = reading.plan(tracking, ekf, level.current());
+    ReadPlan plan = reading.plan(tracking, ekf, level);
     result.timings.roi_ms += planning_time.elapsedMs();
 
     // 3. Spotting, camera by camera in rig order.
@@ -90,12 +90,16 @@ struct Pipeline::Impl {
         frame, rig, spotter, plan.choice.full_frame,
         [&](size_t c) { return reading.request(c, plan, ekf.pose()); }, result);
 
-    // 4. The level, then association: class, score, AFM (paper 3.3), exact matching (3.3),
-    //    pose gate; MCRP / MCAP choose what the measurement fuses (3.5).
+    // 4. Association: class, score, AFM (paper 3.3), exact matching (3.3) on the level
+    //    driven on, pose gate; then what the readings say of the level; MCRP / MCAP choose
+    //    what the measurement fuses (3.5).
     const Stopwatch association_time;
-    level.update(result.cameras, map, options.paper_mode || tracking);
-    AssociatedObservations seen = associator.associate(result.cameras, supplied, tracking,
-                                                       level.current(), ekf, result.associations);
+    AssociatedObservations seen = associator.associate(result.cameras, supplied, tracking, level,
+                                                       ekf, result.associations);
+    level.update(result.cameras, result.associations, result.warnings);
+    result.level = level.belief().level;
+    result.level_probability = level.belief().probability;
+    result.level_decided = level.belief().decided;
     reading.noteOutcomes(result);
     seen.accepted = selectForModules(std::move(seen.accepted), options.paper_modules);
     seen.gated = selectForModules(std::move(seen.gated), options.paper_modules);

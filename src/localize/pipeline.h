@@ -5,7 +5,7 @@
 //   1. motion prediction   odometry in, the EKF predicted to the frame set (motion_prediction.h)
 //   2. read planning       full frame or map-guided regions, reads or fits (read_planning.h)
 //   3. spotting            the injected ocr::TextSpotter, camera by camera (spotting.h)
-//   4. level and association   the level vote (level_vote.h); exact matching, AFM box plot,
+//   4. level and association   the level estimate (level_estimate.h); exact matching, AFM box plot,
 //                          pose gate, reading order (association.h); MCRP / MCAP (paper_modules.h)
 //   5. measurement         parkloc: SE(2) robust least squares on every polygon corner
 //                          (parkloc_measurement.h), then the track's lifecycle: EKF update,
@@ -23,6 +23,7 @@
 #include "geometry/rig.h"
 #include "localize/association.h"
 #include "localize/frame_types.h"
+#include "localize/level_estimate.h"
 #include "localize/motion_prediction.h"
 #include "localize/paper_modules.h"
 #include "localize/paper_pipeline.h"
@@ -41,12 +42,14 @@ struct PipelineOptions {
   // Run the paper's pipeline (OCR-RTPS section 3, paper_pipeline.h) instead of parkloc's.
   // paper() sets the rest of what the paper does; the paper_modules switches still apply.
   bool paper_mode = false;
-  // The map level driven on ("": voted from the texts seen, level_vote.h).
+  // A hint: the map level the drive starts on (e.g. the car entered on B1); "": none, the
+  // level is estimated from the texts seen (level_estimate.h).
   std::string level;
   // A known starting pose (e.g. where the vehicle was parked); otherwise the first certain
   // fix starts the track.
   std::optional<geometry::Pose2> initial_pose;
 
+  LevelOptions levels;                  // the level estimate (level_estimate.h)
   MotionOptions motion;                 // odometry intake (motion_prediction.h)
   EkfOptions ekf;                       // the filter's noise model (pose_ekf.h)
   ReadingOptions reading;               // what to read each frame set (read_planning.h)

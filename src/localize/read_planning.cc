@@ -2,17 +2,22 @@
 
 #include <algorithm>
 
+#include "localize/shared_places.h"
+
 namespace parkloc::localize {
 
 ReadPlanner::ReadPlanner(const geometry::Rig& rig, const map::HdMap& map,
                          const FloorHeights& floors, const ReadingOptions& options,
-                         const std::string& level, bool guided)
-    : rig_(rig), map_(map), floors_(floors), options_(options), schedule_(options, guided) {
-  for (const auto& l : map.landmarks())
-    if (level.empty() || l.level == level) {
-      lexicon_.push_back(l.text);
-      if (l.surface == map::Surface::kGround) floor_lexicon_.push_back(l.text);
-    }
+                         bool guided)
+    : rig_(rig),
+      map_(map),
+      floors_(floors),
+      options_(options),
+      schedule_(options, guided),
+      // Every level's texts: the full frame is where the texts of another level (after a
+      // ramp) and the level signs are read.
+      lexicon_(map::distinctTexts(map)),
+      floor_lexicon_(map::distinctTexts(map, /*floor_only=*/true)) {
   roi_options_.margin_px = options.roi_margin_px;
   roi_options_.min_size_px = options.roi_min_size_px;
 }
@@ -25,23 +30,40 @@ void ReadPlanner::reset() {
   last_read_attempt_.clear();
 }
 
-ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const std::string& level) {
+ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimate& level) {
   ++frame_index_;
   const size_t n_cameras = rig_.cameras.size();
   ReadPlan plan;
   plan.tracking = tracking;
-  plan.level = level;
+  plan.level = level.restriction();
   plan.choice = schedule_.next(n_cameras, tracking, ekf.initialised());
   plan.regions.resize(n_cameras);
   if (plan.choice.all) return plan;
 
-  // Regions of every guided camera, then the budget over all of them.
-  const auto nearby = map_.withinRadius(ekf.pose().translation(), options_.roi_radius_m, level);
+  // Regions of every guided camera, then the budget over all of them. While the level is
+  // undecided, a place the levels share is one region, asked for the text of any level.
+  const auto within = map_.withinRadius(ekf.pose().translation(), options_.roi_radius_m, plan.level);
+  std::vector<SharedPlace> places;
+  if (level.belief().decided)
+    for (const map::Landmark* l : within) places.push_back({l, {l->text}});
+  else
+    places = sharedPlaces(within, level.belief().level, level.options().shared_place_m);
+  std::vector<const map::Landmark*> nearby;
+  for (const SharedPlace& p : places) nearby.push_back(p.landmark);
   auto& candidates = plan.regions;
-  for (size_t c = 0; c < n_cameras; ++c)
-    if (!plan.choice.full_frame[c])
-      candidates[c] = predictRegionCandidates(rig_.cameras[c], nearby, floors_, ekf.pose(),
-                                              ekf.covariance(), roi_options_);
+  for (size_t c = 0; c < n_cameras; ++c) {
+    if (plan.choice.full_frame[c]) continue;
+    candidates[c] = predictRegionCandidates(rig_.cameras[c], nearby, floors_, ekf.pose(),
+                                            ekf.covariance(), roi_options_);
+    for (RegionCandidate& r : candidates[c])
+      for (const SharedPlace& p : places) {
+        if (p.landmark->id != r.landmark_id) continue;
+        r.roi.expected_texts = p.texts;
+        // A place whose text differs between levels is read, not fitted, while the level
+        // is undecided: its reading is what tells the level.
+        if (p.texts.size() > 1) last_read_.erase(r.landmark_id);
+      }
+  }
   RegionBudgetOptions budget;
   budget.max_regions = plan.choice.sweeping ? std::min(options_.max_regions_per_frame,
                                                        options_.max_regions_with_full_frame)

@@ -21,6 +21,7 @@
 #include "geometry/rig.h"
 #include "localize/floor_heights.h"
 #include "localize/frame_types.h"
+#include "localize/level_estimate.h"
 #include "localize/pose_ekf.h"
 #include "localize/region_budget.h"
 #include "localize/roi_prediction.h"
@@ -152,12 +153,13 @@ class ReadPlanner {
  public:
   // The rig, map and floors must outlive the planner.
   ReadPlanner(const geometry::Rig& rig, const map::HdMap& map, const FloorHeights& floors,
-              const ReadingOptions& options, const std::string& level, bool guided);
+              const ReadingOptions& options, bool guided);
   void reset();
 
   // The plan of the next frame set at the filter's predicted pose. `tracking`: the filter's
-  // pose is good enough to predict regions; `level`: the map level driven on.
-  ReadPlan plan(bool tracking, const PoseEkf& ekf, const std::string& level);
+  // pose is good enough to predict regions; `level`: the levels to look for (the decided
+  // one, else every level, a shared place read once for any of its texts).
+  ReadPlan plan(bool tracking, const PoseEkf& ekf, const LevelEstimate& level);
 
   // Camera c's request (its regions are moved out of the plan).
   ocr::SpotRequest request(size_t c, ReadPlan& plan, const geometry::Pose2& pose) const;

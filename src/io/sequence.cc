@@ -65,6 +65,8 @@ Sequence::Sequence(const std::string& dir, const std::string& calib_path,
 
   if (const fs::path poses = root / "poses.tum"; fs::is_regular_file(poses))
     ground_truth_ = loadTum(poses.string());
+  if (const fs::path levels = root / "levels.csv"; fs::is_regular_file(levels))
+    level_truth_ = loadLevels(levels.string());
   const fs::path odometry = odometry_path.empty() ? root / "odometry.csv" : fs::path(odometry_path);
   if (fs::is_regular_file(odometry))
     odometry_ = loadOdometry(odometry.string());

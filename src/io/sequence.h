@@ -1,6 +1,7 @@
 #pragma once
 // A drive: one self-contained sequence folder as `parkloc simulate` writes it
-//   calib.yaml  map.geojson  poses.tum (optional)  odometry.csv (optional)  meta.json (optional)
+//   calib.yaml  map.geojson  poses.tum (optional)  levels.csv (optional)  odometry.csv (optional)
+//   meta.json (optional)
 //   images/<camera>/<timestamp>.jpg|png   labels/<camera>/<timestamp>.json (optional)
 // File stems are timestamps in seconds printed with six decimals ("12.350000").
 // A frame set is the images of all cameras with the same timestamp.
@@ -12,6 +13,7 @@
 
 #include "geometry/rig.h"
 #include "io/labels.h"
+#include "io/levels_csv.h"
 #include "io/odometry_csv.h"
 #include "io/tum.h"
 #include "map/hd_map.h"
@@ -31,6 +33,8 @@ class Sequence {
   const geometry::Rig& rig() const { return rig_; }
   const map::HdMap& map() const { return map_; }
   const std::vector<StampedPose>& groundTruth() const { return ground_truth_; }
+  // The level per frame set (levels.csv), ground truth for evaluation; empty when absent.
+  const std::vector<StampedLevel>& levelTruth() const { return level_truth_; }
   const std::vector<OdometrySample>& odometry() const { return odometry_; }
   const std::string& metaJson() const { return meta_json_; }  // raw text, "{}" when absent
 
@@ -51,6 +55,7 @@ class Sequence {
   geometry::Rig rig_;
   map::HdMap map_;
   std::vector<StampedPose> ground_truth_;
+  std::vector<StampedLevel> level_truth_;
   std::vector<OdometrySample> odometry_;
   std::string meta_json_ = "{}";
   std::vector<double> timestamps_;

@@ -17,6 +17,7 @@
 #include "geometry/rig.h"
 #include "io/calibration_yaml.h"
 #include "io/labels.h"
+#include "io/levels_csv.h"
 #include "io/map_geojson.h"
 #include "io/odometry_csv.h"
 #include "io/sequence.h"
@@ -24,6 +25,8 @@
 #include "sim/annotate.h"
 #include "sim/drive.h"
 #include "sim/garage.h"
+#include "sim/level_schedule.h"
+#include "sim/ramp_level.h"
 #include "sim/renderer.h"
 
 namespace parkloc::sim {
@@ -69,9 +72,11 @@ std::vector<SequencePlan> planSequences(const Scenario& scenario) {
       p.garage = gi;
       p.drive = di;
       p.level = g.drives[di].level.empty() ? g.levels[di % g.levels.size()] : g.drives[di].level;
+      p.to_level = g.drives[di].to_level;
       p.split = g.split;
       p.condition = g.drives[di].condition;
-      p.name = fmt::format("{}_{}_d{}", g.name, p.level, di);
+      p.name = p.to_level.empty() ? fmt::format("{}_{}_d{}", g.name, p.level, di)
+                                  : fmt::format("{}_{}-{}_d{}", g.name, p.level, p.to_level, di);
       plans.push_back(p);
     }
   }
@@ -127,12 +132,17 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
                 plans.end());
   if (options.max_sequences >= 0 && static_cast<size_t>(options.max_sequences) < plans.size())
     plans.resize(options.max_sequences);
-  for (const auto& p : plans)
-    if (scenario.garages[p.garage].levels.end() ==
-        std::find(scenario.garages[p.garage].levels.begin(),
-                  scenario.garages[p.garage].levels.end(), p.level))
-      throw InputError(fmt::format("scenario: drive level '{}' is not a level of garage '{}'",
-                                   p.level, scenario.garages[p.garage].name));
+  for (const auto& p : plans) {
+    const GarageSpec& gs = scenario.garages[p.garage];
+    for (const std::string& level : {p.level, p.to_level})
+      if (!level.empty() && gs.levels.end() == std::find(gs.levels.begin(), gs.levels.end(), level))
+        throw InputError(fmt::format("scenario: drive level '{}' is not a level of garage '{}'",
+                                     level, gs.name));
+    if (p.to_level == p.level)
+      throw InputError(
+          fmt::format("scenario: drive {} of garage '{}' goes from level '{}' to itself", p.drive,
+                      gs.name, p.level));
+  }
 
   const fs::path root(options.out_dir);
   std::error_code ec;
@@ -200,14 +210,35 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
     const std::shared_ptr<const Garage> garage = getGarage(plan.garage);
     const GarageSpec& gs = scenario.garages[plan.garage];
     const DriveSpec& ds = gs.drives[plan.drive];
-    const int level = garage->levelIndex(plan.level);
     const uint64_t seed = driveSeed(scenario.seed, plan.garage, plan.drive);
-    const Drive drive = planDrive(*garage, level, ds, seed);
+    const Drive drive = planDrive(*garage, garage->levelIndex(plan.level), ds, seed);
+    const LevelSchedule schedule = levelSchedule(ds, plan.level, drive.duration());
     int n = static_cast<int>(std::floor(drive.duration() * scenario.frame_rate + 1e-9)) + 1;
     if (options.max_frames >= 0) n = std::min(n, options.max_frames);
     total += n - budget[si];
     const LightingOptions light = lightingForCondition(plan.condition, seed ^ 0xabcdefULL);
-    const Renderer renderer(*garage, level, rig, rays, light);
+    // One renderer at a time: the start level's, the ramp's, the end level's, each built when
+    // the drive reaches its stretch.
+    const int start_level = garage->levelIndex(schedule.start_level);
+    GarageLevel ramp;
+    std::unique_ptr<Renderer> stretch_renderer;
+    std::optional<Stretch> rendered_stretch;
+    auto rendererFor = [&](Stretch stretch) -> const Renderer& {
+      if (rendered_stretch == stretch) return *stretch_renderer;
+      stretch_renderer.reset();
+      if (stretch == Stretch::kRamp) {
+        ramp = rampLevel(*garage, start_level);
+        stretch_renderer = std::make_unique<Renderer>(*garage, ramp, rig, rays, light);
+      } else {
+        stretch_renderer = std::make_unique<Renderer>(
+            *garage,
+            garage->levelIndex(stretch == Stretch::kStartLevel ? schedule.start_level
+                                                               : schedule.end_level),
+            rig, rays, light);
+      }
+      rendered_stretch = stretch;
+      return *stretch_renderer;
+    };
 
     const fs::path dir = root / "sequences" / plan.name;
     fs::remove_all(dir);
@@ -221,11 +252,19 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
     DatasetStats local;
     local.sequences = 1;
     std::vector<io::StampedPose> poses;
+    std::vector<io::StampedLevel> levels;
+    std::vector<std::string> levels_driven;
     const auto render_start = std::chrono::steady_clock::now();
     for (int k = 0; k < n; ++k) {
       const double t = k / scenario.frame_rate;
       const DriveState state = drive.at(t);
       poses.push_back({t, state.pose.toRigid3()});
+      const Stretch stretch = schedule.stretchAt(t);
+      levels.push_back({t, schedule.levelAt(t)});
+      if (levels_driven.empty() || levels_driven.back() != levels.back().level)
+        levels_driven.push_back(levels.back().level);
+      const Renderer& renderer = rendererFor(stretch);
+      const int level = garage->levelIndex(levels.back().level);
       const std::vector<cv::Mat> images =
           renderer.render(state.pose, mix(seed ^ (static_cast<uint64_t>(k) << 16)));
       const std::string stem = io::timestampStem(t);
@@ -245,7 +284,9 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
           return renderer.floorInkContrast(c, pixel, decal);
         };
         annotate.channel_noise = light.noise_sigma;
-        labels.instances = annotateImage(*garage, level, cam, state.pose, annotate);
+        // On the ramp no text is in view.
+        if (stretch != Stretch::kRamp)
+          labels.instances = annotateImage(*garage, level, cam, state.pose, annotate);
         io::saveLabels(labels, (dir / "labels" / cam.name / (stem + ".json")).string());
         io::saveIcdarLabels(labels, (dir / "labels" / cam.name / (stem + ".txt")).string());
         ++local.images;
@@ -274,7 +315,9 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
     local.render_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - render_start).count();
     const double t_end = (n - 1) / scenario.frame_rate;
+    stretch_renderer.reset();
     io::saveTum(poses, (dir / "poses.tum").string());
+    io::saveLevels(levels, (dir / "levels.csv").string());
     std::vector<OdometrySample> odo =
         simulateOdometry(drive, scenario.odometry_rate, seed ^ 0x0d0e7ULL);
     while (!odo.empty() && odo.back().timestamp > t_end + 1e-9) odo.pop_back();
@@ -285,6 +328,12 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
     meta["scenario"] = scenario.name;
     meta["garage"] = gs.name;
     meta["level"] = plan.level;
+    meta["levels_driven"] = levels_driven;
+    if (schedule.changesLevel())
+      meta["level_change"] = {{"from", schedule.start_level},
+                              {"to", schedule.end_level},
+                              {"ramp_start_s", schedule.ramp_start},
+                              {"ramp_end_s", schedule.ramp_end}};
     meta["split"] = plan.split;
     meta["condition"] = plan.condition;
     meta["route"] = ds.route;

@@ -1,7 +1,7 @@
 #pragma once
 // Writes a scenario as a dataset: DIR/sequences/<name>/ (calib.yaml, map.geojson, poses.tum,
-// odometry.csv, meta.json, images/<camera>/<stem>.jpg, labels/<camera>/<stem>.json and .txt)
-// and DIR/splits.json. See docs/DATASET.md.
+// levels.csv, odometry.csv, meta.json, images/<camera>/<stem>.jpg, labels/<camera>/<stem>.json
+// and .txt) and DIR/splits.json. See docs/DATASET.md.
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -47,12 +47,14 @@ struct DatasetStats {
 // Progress: sequences' frame sets done so far and in total.
 using ProgressCallback = std::function<void(size_t done, size_t total)>;
 
-// A sequence's folder name: "<garage>_<level>_<drive index>", e.g. "g01_B1_d0".
+// A sequence's folder name: "<garage>_<level>_d<drive index>", e.g. "g01_B1_d0"; a drive
+// that changes level names both, "<garage>_<level>-<to_level>_d<drive index>" ("g10_B1-B2_d3").
 struct SequencePlan {
   std::string name;
   size_t garage = 0;
   size_t drive = 0;
-  std::string level;
+  std::string level;     // the level the drive starts on
+  std::string to_level;  // the level it ends on after a ramp; empty when it stays
   std::string split;
   std::string condition;
 };

@@ -8,6 +8,7 @@
 //   garage_level.cc      one level: its style, the slot rows, then floor words, lamps, shade
 //   garage_placement.cc  what stands or is painted in a row: pillars, numbers, parked cars
 //   garage_numbering.cc  the texts: parking numbers, pillar labels, licence plates
+//   garage_signs.cc      signs naming the level, where the spec asks for them
 //   garage_surfaces.cc   decals, paint canvases, the concrete texture and the floor shade
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
@@ -85,11 +86,20 @@ struct LevelBuild {
   void placeParkingNumber(const Slot& slot, double x, double y_edge, int side);
   void placeParkedCar(double x, double y_edge, int side);
   void placeFloorWords();
+  // garage_signs.cc: signs naming the level on the walls and over the aisles (no random draw).
+  void placeLevelSigns();
   // garage_surfaces.cc: mottling, stains, tyre marks and occlusion around the boxes placed.
   cv::Mat floorShade();
 };
 
 constexpr double kLineWidth = 0.12;  // painted slot lines, metres
+
+// A text on a vertical face whose outward normal is `n` (horizontal): centred on `centre`,
+// `height` tall, reading left to right for someone facing the face. Its width comes from
+// Builder::textDecal.
+map::Landmark verticalText(const std::string& id, const std::string& text, map::TextClass cls,
+                           const std::string& level, const Eigen::Vector3d& n,
+                           const Eigen::Vector3d& centre, double height);
 
 // garage_level.cc
 void buildLevel(Builder& b, int level_index);
@@ -100,6 +110,11 @@ std::string randomPlate(Rng& rng);
 
 // garage_surfaces.cc
 cv::Mat makeConcrete(Rng& rng, int size);
+// Mottling, oil stains in `slots`, tyre marks along the aisles' lanes and occlusion around what
+// stands on the floor (`occupancy_mask`, 10 cells per metre): a multiplier on the floor albedo
+// at Garage::shade_texels_per_metre.
+cv::Mat floorShade(const Garage& g, Rng& rng, const std::vector<Slot>& slots,
+                   const cv::Mat& occupancy_mask);
 void paintRect(const Garage& g, cv::Mat& canvas, double x0, double y0, double x1, double y1);
 void paintArrow(const Garage& g, cv::Mat& canvas, const Eigen::Vector2d& c,
                 const Eigen::Vector2d& dir);

@@ -7,8 +7,8 @@ namespace parkloc::sim::detail {
 
 // One level: its style (number and line colours, pillar labels and bands), then row by row
 // the slots with their lines, pillars, numbers and cars, the aisle arrows, the other floor
-// words, the lamps and the floor shade. Every draw from the random stream happens in this
-// order, so a level is the same for the same seed.
+// words, the lamps and the floor shade, then the level signs where the spec asks for them. Every
+// draw from the random stream happens in this order, so a level is the same for the same seed.
 void buildLevel(Builder& b, int level_index) {
   const GarageSpec& spec = b.spec;
   Garage& g = b.g;
@@ -104,6 +104,7 @@ void buildLevel(Builder& b, int level_index) {
       L.lamps.push_back({Eigen::Vector2f(float(cx), float(y)), Eigen::Vector2f(0.07f, 0.6f)});
 
   L.floor_shade = lb.floorShade();
+  if (spec.level_signs) lb.placeLevelSigns();
 }
 
 }  // namespace parkloc::sim::detail

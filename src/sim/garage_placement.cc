@@ -34,17 +34,10 @@ void LevelBuild::placePillar(double x, double y_edge, int side, char zone, int& 
                                                            {Eigen::Vector3d(1, 0, 0), "east"},
                                                            {Eigen::Vector3d(-1, 0, 0), "west"}};
   for (const auto& [n, face_name] : faces) {
-    map::Landmark lm;
-    lm.id = fmt::format("{}:pillar:{}:{}", lv, pillar_count, face_name);
-    lm.text = text;
-    lm.cls = map::TextClass::kPillar;
-    lm.level = lv;
-    lm.surface = map::Surface::kVertical;
-    lm.normal = n;
+    map::Landmark lm = verticalText(fmt::format("{}:pillar:{}:{}", lv, pillar_count, face_name),
+                                    text, map::TextClass::kPillar, lv, n,
+                                    centre + n * (ps / 2) + Eigen::Vector3d(0, 0, text_z), text_h);
     const Eigen::Vector3d right = (-n).cross(Eigen::Vector3d::UnitZ());
-    lm.heading = std::atan2(right.y(), right.x());
-    lm.position = centre + n * (ps / 2) + Eigen::Vector3d(0, 0, text_z);
-    lm.height = text_h;
     Decal ink = b.textDecal(lm, font, 600.0, pillar_ink, 1.0f, 0.0);
     if (lm.width > ps - 0.06) {  // too wide for the face: shrink
       lm.height *= (ps - 0.06) / lm.width;

@@ -1,3 +1,4 @@
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
@@ -40,6 +41,23 @@ Decal Builder::textDecal(map::Landmark& lm, const std::string& font, double texe
   d.wear = static_cast<float>(wear);
   d.ink_kept = ink_before > 0.0 ? static_cast<float>(ink_after / ink_before) : 1.0f;
   return d;
+}
+
+map::Landmark verticalText(const std::string& id, const std::string& text, map::TextClass cls,
+                           const std::string& level, const Eigen::Vector3d& n,
+                           const Eigen::Vector3d& centre, double height) {
+  map::Landmark lm;
+  lm.id = id;
+  lm.text = text;
+  lm.cls = cls;
+  lm.level = level;
+  lm.surface = map::Surface::kVertical;
+  lm.normal = n;
+  const Eigen::Vector3d right = (-n).cross(Eigen::Vector3d::UnitZ());
+  lm.heading = std::atan2(right.y(), right.x());
+  lm.position = centre;
+  lm.height = height;
+  return lm;
 }
 
 Decal Builder::solidDecal(const Eigen::Vector3d& center, const Eigen::Vector3d& axis_u,
@@ -109,7 +127,10 @@ cv::Mat makeConcrete(Rng& rng, int size) {
 
 // Floor shade: large-scale mottling, oil stains in slots, tyre marks,
 // occlusion near boxes.
-cv::Mat LevelBuild::floorShade() {
+cv::Mat LevelBuild::floorShade() { return detail::floorShade(g, rng, L.slots, occupancy_mask); }
+
+cv::Mat floorShade(const Garage& g, Rng& rng, const std::vector<Slot>& slots,
+                   const cv::Mat& occupancy_mask) {
   const double sp = g.shade_texels_per_metre;
   const int sw_px = static_cast<int>(std::ceil(g.size.x() * sp)),
             sh_px = static_cast<int>(std::ceil(g.size.y() * sp));
@@ -120,7 +141,7 @@ cv::Mat LevelBuild::floorShade() {
   cv::normalize(shade, shade, -1.0, 1.0, cv::NORM_MINMAX);
   shade = 1.0 + 0.08 * shade;
   cv::Mat marks(sh_px, sw_px, CV_32F, cv::Scalar(0));
-  for (const Slot& s : L.slots) {
+  for (const Slot& s : slots) {
     const int blobs = std::uniform_int_distribution<int>(0, 3)(rng);
     for (int i = 0; i < blobs; ++i) {
       const cv::Point c(int((s.center.x() + uniform(rng, -0.6, 0.6)) * sp),
@@ -130,11 +151,11 @@ cv::Mat LevelBuild::floorShade() {
           uniform(rng, 0, 180), 0, 360, cv::Scalar(uniform(rng, 0.15, 0.4)), -1, cv::LINE_AA);
     }
   }
-  for (int aisle = 0; aisle < spec.aisles; ++aisle)
+  for (const double aisle_y : g.aisle_y)
     for (double lane : {-0.8, 0.8})
       for (double x = g.cross_x0; x < g.cross_x1;) {
         const double len = uniform(rng, 2.0, 10.0);
-        const double y = g.aisle_y[aisle] + lane + uniform(rng, -0.3, 0.3);
+        const double y = aisle_y + lane + uniform(rng, -0.3, 0.3);
         cv::line(marks, cv::Point(int(x * sp), int(y * sp)),
                  cv::Point(int((x + len) * sp), int((y + uniform(rng, -0.3, 0.3)) * sp)),
                  cv::Scalar(uniform(rng, 0.08, 0.2)), std::max(1, int(0.2 * sp)), cv::LINE_AA);

@@ -12,9 +12,9 @@ namespace parkloc::sim {
 
 using detail::kInf;
 
-Renderer::Impl::Impl(const Garage& garage, int level, const geometry::Rig& r,
+Renderer::Impl::Impl(const Garage& garage, const GarageLevel& level, const geometry::Rig& r,
                      std::shared_ptr<const std::vector<CameraRays>> ry, const LightingOptions& li)
-    : g(garage), L(garage.levels.at(level)), rig(r), rays(std::move(ry)), light(li) {
+    : g(garage), L(level), rig(r), rays(std::move(ry)), light(li) {
   std::mt19937_64 rng(light.lamp_seed);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   for (const Lamp& lamp : L.lamps) {
@@ -136,6 +136,11 @@ void Renderer::Impl::addToGrid(std::vector<std::vector<int>>& grid, const Eigen:
 }
 
 Renderer::Renderer(const Garage& garage, int level, const geometry::Rig& rig,
+                   std::shared_ptr<const std::vector<CameraRays>> rays,
+                   const LightingOptions& light)
+    : impl_(std::make_unique<Impl>(garage, garage.levels.at(level), rig, std::move(rays), light)) {}
+
+Renderer::Renderer(const Garage& garage, const GarageLevel& level, const geometry::Rig& rig,
                    std::shared_ptr<const std::vector<CameraRays>> rays,
                    const LightingOptions& light)
     : impl_(std::make_unique<Impl>(garage, level, rig, std::move(rays), light)) {}

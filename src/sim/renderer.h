@@ -25,6 +25,11 @@ class Renderer {
   // A camera with a body (geometry::RigCamera::body) sees that body where its rays meet it.
   Renderer(const Garage& garage, int level, const geometry::Rig& rig,
            std::shared_ptr<const std::vector<CameraRays>> rays, const LightingOptions& light);
+  // A level that is not one of the garage's (the ramp between two floors, sim/ramp_level.h)
+  // inside the garage's shell; `level` must outlive the renderer and its decals index the
+  // garage's textures.
+  Renderer(const Garage& garage, const GarageLevel& level, const geometry::Rig& rig,
+           std::shared_ptr<const std::vector<CameraRays>> rays, const LightingOptions& light);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;

@@ -88,7 +88,7 @@ struct Renderer::Impl {
 
   // Scene tables (renderer.cc): the lamps that are on, light maps, paint mask, decal and lamp
   // grids, the rays in the vehicle frame, the car's own body, the tone curve.
-  Impl(const Garage& garage, int level, const geometry::Rig& r,
+  Impl(const Garage& garage, const GarageLevel& level, const geometry::Rig& r,
        std::shared_ptr<const std::vector<CameraRays>> ry, const LightingOptions& li);
   void addToGrid(std::vector<std::vector<int>>& grid, const Eigen::Vector2f& lo,
                  const Eigen::Vector2f& hi, int index) const;

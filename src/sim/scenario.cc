@@ -2,6 +2,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -35,6 +37,9 @@ DriveSpec parseDrive(const YAML::Node& node, const std::string& where) {
   read(node, "condition", d.condition, where);
   read(node, "level", d.level, where);
   read(node, "duration_s", d.duration_s, where);
+  read(node, "to_level", d.to_level, where);
+  read(node, "transition_s", d.transition_s, where);
+  read(node, "transition_at_s", d.transition_at_s, where);
   if (d.route != "tour" && d.route != "park")
     throw InputError(where + ": field 'route' must be tour or park, not '" + d.route + "'");
   if (d.condition != "bright" && d.condition != "weak" && d.condition != "blur")
@@ -42,6 +47,22 @@ DriveSpec parseDrive(const YAML::Node& node, const std::string& where) {
                      d.condition + "'");
   if (!(d.duration_s > 0.0 && d.duration_s < 3600.0))
     throw InputError(where + ": field 'duration_s' out of range");
+  if (!(d.transition_s >= 0.5 && d.transition_s <= 60.0))
+    throw InputError(where + ": field 'transition_s' out of range (0.5 to 60 s)");
+  if (!std::isfinite(d.transition_at_s))
+    throw InputError(where + ": field 'transition_at_s' out of range");
+  if (!d.to_level.empty()) {
+    // A park route's slot and manoeuvre belong to one level's parked cars.
+    if (d.route != "tour")
+      throw InputError(where + ": field 'to_level' needs route tour, not '" + d.route + "'");
+    if (d.to_level == d.level)
+      throw InputError(where + ": field 'to_level' is the drive's own level '" + d.level + "'");
+    const double ramp_start =
+        d.transition_at_s < 0.0 ? 0.5 * (d.duration_s - d.transition_s) : d.transition_at_s;
+    if (!(ramp_start > 0.0 && ramp_start + d.transition_s < d.duration_s))
+      throw InputError(where + ": the ramp (transition_at_s, transition_s) does not fit in " +
+                       "duration_s");
+  }
   return d;
 }
 
@@ -66,6 +87,7 @@ GarageSpec parseGarage(const YAML::Node& node, const GarageSpec& defaults,
   read(node, "yellow_share", g.yellow_share, where);
   read(node, "first_number", g.first_number, where);
   read(node, "fonts", g.fonts, where);
+  read(node, "level_signs", g.level_signs, where);
   if (node["numbering"]) {
     std::string scheme;
     read(node, "numbering", scheme, where);
@@ -95,6 +117,12 @@ GarageSpec parseGarage(const YAML::Node& node, const GarageSpec& defaults,
   if (g.fonts.empty()) throw InputError(where + ": field 'fonts' is empty");
   for (const auto& f : g.fonts) resolveFontPath(f);
   if (g.drives.empty()) throw InputError(where + ": no drives");
+  for (size_t i = 0; i < g.drives.size(); ++i) {
+    const std::string& to = g.drives[i].to_level;
+    if (!to.empty() && std::find(g.levels.begin(), g.levels.end(), to) == g.levels.end())
+      throw InputError(where + " drive " + std::to_string(i) + ": field 'to_level' '" + to +
+                       "' is not one of the garage's levels");
+  }
   return g;
 }
 
@@ -164,12 +192,19 @@ Scenario defaultScenario() {
   auto drive = [](const char* route, const char* condition) {
     return DriveSpec{route, condition, "", 12.0};
   };
+  // A tour that goes down a ramp from `from` to `to` in the middle of the drive.
+  auto levelChange = [](const char* from, const char* to, double duration, double ramp) {
+    DriveSpec d{"tour", "bright", from, duration};
+    d.to_level = to;
+    d.transition_s = ramp;
+    return d;
+  };
   Scenario s;
   s.name = "default";
   s.seed = 2026;
   // Train and val share schemes three_digit / level_dash / plain and sans fonts; test uses
   // zone_letter numbers and serif / mono fonts that train never sees. Every split has every
-  // condition; the test garage has one drive per condition.
+  // condition; the test garage has one drive per condition and a drive that changes level.
   s.garages = {
       makeGarage("g01", "train", {"B1", "B2"}, 2, 15, N::kThreeDigit, 1, 0.45,
                  {"DejaVuSans-Bold.ttf", "LiberationSans-Bold.ttf"}, {drive("tour", "bright")}),
@@ -193,7 +228,8 @@ Scenario defaultScenario() {
                  {drive("tour", "weak")}),
       makeGarage("g10", "test", {"B1", "B2"}, 2, 15, N::kZoneLetter, 1, 0.45,
                  {"LiberationSerif-Bold.ttf", "FreeMonoBold.ttf", "DejaVuSerif-Bold.ttf"},
-                 {drive("tour", "bright"), drive("park", "weak"), drive("tour", "blur")}),
+                 {drive("tour", "bright"), drive("park", "weak"), drive("tour", "blur"),
+                  levelChange("B1", "B2", 30.0, 3.0)}),
   };
   return s;
 }

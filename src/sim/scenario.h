@@ -4,6 +4,7 @@
 // docs/DATASET.md for the file format.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace parkloc::sim {
@@ -16,11 +17,28 @@ NumberingScheme numberingSchemeFromString(const std::string& name);  // throws I
 // One recorded drive. `route` is "tour" (along aisles, through turns) or "park" (a short
 // approach and a reverse parking manoeuvre into a free slot). `condition` is "bright",
 // "weak" (dim lamps, some off, more sensor noise) or "blur" (motion blur and defocus).
+//
+// A tour may change level: it starts on `level`, drives, goes down (or up) a ramp for
+// `transition_s` seconds and continues on `to_level`. The levels of a garage share their
+// layout, so the x-y path runs on unbroken; the ramp is rendered as the garage's shell with no
+// text in view (sim/ramp_level.h), see docs/DATASET.md.
 struct DriveSpec {
+  DriveSpec() = default;
+  DriveSpec(std::string route_, std::string condition_, std::string level_, double duration)
+      : route(std::move(route_)),
+        condition(std::move(condition_)),
+        level(std::move(level_)),
+        duration_s(duration) {}
+
   std::string route = "tour";
   std::string condition = "bright";
-  std::string level;         // empty: the garage's levels in turn
-  double duration_s = 20.0;  // upper bound; a park route ends when parked
+  std::string level;          // empty: the garage's levels in turn
+  double duration_s = 20.0;   // upper bound; a park route ends when parked
+  std::string to_level;       // empty: the drive stays on its level
+  double transition_s = 3.0;  // seconds on the ramp
+  // When the ramp begins, seconds from the start; < 0: the ramp is centred in the drive, so
+  // both levels get the same time.
+  double transition_at_s = -1.0;
 };
 
 struct GarageSpec {
@@ -43,6 +61,10 @@ struct GarageSpec {
   int first_number = 1;
   // Font files (names under /usr/share/fonts/truetype/{dejavu,liberation,freefont} or paths).
   std::vector<std::string> fonts = {"DejaVuSans-Bold.ttf"};
+  // Signs naming the level ("B2") on the end walls of the aisles and cross aisles and hung
+  // over each aisle, as real garages have them (garage_signs.cc). Off: no sign is placed and
+  // nothing else of the garage changes.
+  bool level_signs = false;
   std::vector<DriveSpec> drives = {DriveSpec{}};
 };
 
@@ -56,9 +78,8 @@ struct Scenario {
 };
 
 // The shipped dataset: 10 garages (7 train, 2 val, 1 test with numbering schemes and fonts
-// that train never sees), every condition: 13 drives of about 12 s at 10 Hz, about 1,500 frame
-// sets (6,000 images). Equals
-// data/scenarios/default.yaml.
+// that train never sees), every condition: 13 drives of about 12 s at 10 Hz and one 30 s
+// test drive from B1 down to B2, about 2,200 frame sets. Equals data/scenarios/default.yaml.
 Scenario defaultScenario();
 // One small garage and one ~30 s drive, for `parkloc demo` and quick checks.
 Scenario demoScenario();

@@ -103,6 +103,23 @@ TEST_F(SequenceTest, LabelsAreOptional) {
   EXPECT_FALSE(seq.loadLabels(1, "front").has_value());
 }
 
+TEST_F(SequenceTest, LevelTruthIsOptionalAndMalformedOnesAreRejected) {
+  makeSequence();
+  EXPECT_TRUE(Sequence(dir_.string()).levelTruth().empty());
+  write("levels.csv", "timestamp,level\n0.1,B1\n0.2,B2\n");
+  const Sequence seq(dir_.string());
+  ASSERT_EQ(seq.levelTruth().size(), 2u);
+  EXPECT_EQ(levelAt(seq.levelTruth(), seq.timestamps()[1]), "B2");
+  write("levels.csv", "timestamp;level\n0.1;B1\n");
+  try {
+    Sequence bad(dir_.string());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "levels " + path("levels.csv") + ":1: expected the header 'timestamp,level'");
+  }
+}
+
 TEST_F(SequenceTest, MissingCalibrationNamesThePath) {
   makeSequence();
   std::filesystem::remove(dir_ / "calib.yaml");

@@ -33,7 +33,12 @@ TEST(Scenario, ShippedDefaultYamlEqualsBuiltIn) {
       EXPECT_EQ(a.drives[k].route, b.drives[k].route);
       EXPECT_EQ(a.drives[k].condition, b.drives[k].condition);
       EXPECT_DOUBLE_EQ(a.drives[k].duration_s, b.drives[k].duration_s);
+      EXPECT_EQ(a.drives[k].level, b.drives[k].level);
+      EXPECT_EQ(a.drives[k].to_level, b.drives[k].to_level);
+      EXPECT_DOUBLE_EQ(a.drives[k].transition_s, b.drives[k].transition_s);
+      EXPECT_DOUBLE_EQ(a.drives[k].transition_at_s, b.drives[k].transition_at_s);
     }
+    EXPECT_EQ(a.level_signs, b.level_signs);
   }
 }
 
@@ -77,6 +82,74 @@ TEST(Scenario, BadFilesThrowWithTheField) {
   }
   EXPECT_THROW(parseScenario("garages:\n  - {fonts: [NoSuchFont.ttf]}\n", "x.yaml"), InputError);
   EXPECT_THROW(loadScenario("/nonexistent/scenario.yaml"), InputError);
+}
+
+TEST(Scenario, LevelChangeKeys) {
+  const Scenario s = parseScenario(
+      "garages:\n  - levels: [P2, P3]\n    level_signs: true\n    drives:\n"
+      "      - {route: tour, duration_s: 24, level: P2, to_level: P3, transition_s: 4,"
+      " transition_at_s: 9}\n      - {route: park}\n",
+      "x.yaml");
+  const GarageSpec& g = s.garages.at(0);
+  EXPECT_TRUE(g.level_signs);
+  EXPECT_EQ(g.drives.at(0).to_level, "P3");
+  EXPECT_EQ(g.drives.at(0).transition_s, 4.0);
+  EXPECT_EQ(g.drives.at(0).transition_at_s, 9.0);
+  EXPECT_EQ(g.drives.at(1).to_level, "");
+  EXPECT_FALSE(parseScenario("garages:\n  - {name: a}\n", "x.yaml").garages[0].level_signs);
+}
+
+TEST(Scenario, BadLevelChangesNameTheField) {
+  auto error = [](const std::string& drive) {
+    try {
+      parseScenario("garages:\n  - {name: a, levels: [B1, B2], drives: [" + drive + "]}\n",
+                    "x.yaml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error("{to_level: B3}"),
+            "x.yaml garage 0 drive 0: field 'to_level' 'B3' is not one of the garage's levels");
+  EXPECT_EQ(error("{route: park, to_level: B2}"),
+            "x.yaml garage 0 drive 0: field 'to_level' needs route tour, not 'park'");
+  EXPECT_EQ(error("{level: B2, to_level: B2}"),
+            "x.yaml garage 0 drive 0: field 'to_level' is the drive's own level 'B2'");
+  EXPECT_EQ(error("{to_level: B2, transition_s: 0}"),
+            "x.yaml garage 0 drive 0: field 'transition_s' out of range (0.5 to 60 s)");
+  EXPECT_EQ(error("{to_level: B2, duration_s: 10, transition_at_s: 8, transition_s: 2}"),
+            "x.yaml garage 0 drive 0: the ramp (transition_at_s, transition_s) does not fit in "
+            "duration_s");
+  EXPECT_EQ(error("{to_level: B2, duration_s: 3, transition_s: 3}"),
+            "x.yaml garage 0 drive 0: the ramp (transition_at_s, transition_s) does not fit in "
+            "duration_s");
+  EXPECT_EQ(error("{to_level: B2, transition_at_s: .nan}"),
+            "x.yaml garage 0 drive 0: field 'transition_at_s' out of range");
+  EXPECT_NE(error("{to_level: [B2]}").find("field 'to_level' has an invalid value"),
+            std::string::npos);
+  EXPECT_EQ(error("{to_level: B2}"), "no error");
+}
+
+TEST(Scenario, ShippedLevelScenariosUseUnseenLevelsFontsAndSigns) {
+  const Scenario base = defaultScenario();
+  std::set<std::string> base_levels, base_fonts;
+  for (const auto& g : base.garages) {
+    base_levels.insert(g.levels.begin(), g.levels.end());
+    base_fonts.insert(g.fonts.begin(), g.fonts.end());
+  }
+  for (const char* file : {"levels.yaml", "unseen.yaml"}) {
+    const Scenario s = loadScenario(std::string(PARKLOC_SOURCE_DIR) + "/data/scenarios/" + file);
+    EXPECT_NE(s.seed, base.seed) << file;
+    int level_changes = 0, plain = 0;
+    for (const auto& g : s.garages) {
+      for (const auto& l : g.levels) EXPECT_EQ(base_levels.count(l), 0u) << file << " " << l;
+      for (const auto& f : g.fonts) EXPECT_EQ(base_fonts.count(f), 0u) << file << " " << f;
+      EXPECT_EQ(g.level_signs, g.levels.size() > 1) << file << " " << g.name;
+      for (const auto& d : g.drives) (d.to_level.empty() ? plain : level_changes)++;
+    }
+    EXPECT_GE(level_changes, 2) << file;
+    EXPECT_GE(plain, 1) << file;
+  }
 }
 
 TEST(Scenario, NumberingSchemes) {

@@ -32,6 +32,7 @@ struct EvalArgs {
   int max_frames = 0;
   bool no_paper = false;
   bool no_oracle = false;
+  bool give_level = false;
   bool no_lexicon = false;
   bool whole_polygons = false;
   bool quiet = false;
@@ -105,6 +106,7 @@ void runEval(const EvalArgs& a) {
   options.parkloc_options = config.pipeline;
   options.paper_ablation = !a.no_paper;
   options.oracle = !a.no_oracle;
+  options.give_level = a.give_level;
   options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
   options.progress = [&](const eval::Progress& p) { progress(p); };
   options.title = "parkloc evaluation: " + a.split + " split";
@@ -136,6 +138,8 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--no-paper", args->no_paper, "Skip the paper pipeline and its ablation");
   cmd->add_flag("--no-oracle", args->no_oracle, "Skip the oracle-OCR variant");
+  cmd->add_flag("--give-level", args->give_level,
+                "For comparison: hint each drive's starting level (meta.json) to the pipelines");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   args->config.addTo(cmd);
 

@@ -157,8 +157,10 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         if (!start) continue;  // no ground truth to start from
         run.dead_reckoning = std::make_unique<DeadReckoning>(*start, t0);
       } else {
+        localize::PipelineOptions pipeline_options = tally.spec.options;
+        if (options.give_level) pipeline_options.level = sequenceLevel(seq.metaJson());
         run.pipeline = std::make_unique<localize::Pipeline>(
-            seq.rig(), seq.map(), tally.spec.options,
+            seq.rig(), seq.map(), pipeline_options,
             tally.spec.source == Source::kSpotter ? spotter : nullptr);
       }
       runs.push_back(std::move(run));
@@ -209,7 +211,8 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         if (c.labels) labels.push_back(*c.labels);
       LevelFrame level_truth;
       level_truth.timestamp = t;
-      level_truth.truth = start_level;
+      // levels.csv where the drive has one (a drive that changes level), else meta.json's.
+      level_truth.truth = io::levelAt(seq.levelTruth(), t).value_or(start_level);
       level_truth.telling_text_in_view = tellingTextInView(seq.map(), labels);
 
       for (VariantRun& run : runs) {

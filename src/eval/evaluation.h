@@ -27,6 +27,9 @@ struct EvaluationOptions {
   bool paper_own_spotting = false;
   bool oracle = true;                         // the full pipeline on ground-truth text boxes
   bool odometry_only = true;                  // dead reckoning from the true first pose
+  // For comparison only: tell every pipeline the level each drive starts on (meta.json) as
+  // a hint, as a user who knows where the car entered would. Off: the level is estimated.
+  bool give_level = false;
   size_t max_frames_per_sequence = 0;         // 0: all
   size_t trajectory_views = 2;                // drives drawn in the report
   localize::PipelineOptions parkloc_options;  // for parkloc and the oracle

@@ -36,12 +36,12 @@ struct LevelOptions {
   // A level with at least this probability is decided.
   double decided_probability = 0.99;
   // Likelihood ratio of one reading of a level sign for the level it names.
-  double sign_ratio = 20.0;
+  double sign_ratio = 30.0;
   // Likelihood ratio of one reading of a text for the levels that have it (when not all do).
-  double text_ratio = 4.0;
+  double text_ratio = 10.0;
   // Likelihood ratio of a text associated by the pose gate for the levels that have it at
   // that place (when not all do).
-  double place_ratio = 4.0;
+  double place_ratio = 10.0;
   // No frame set moves the odds between two levels by more than this: one frame's readings
   // are not independent (one misread sign, seen by two cameras, on the same paint).
   double max_frame_ratio = 50.0;

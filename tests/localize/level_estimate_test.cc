@@ -71,7 +71,7 @@ TEST(LevelEstimateTest, ALevelSignDecidesWithinAFewReadings) {
   const map::HdMap map = twoLevels();
   LevelEstimate e(map, {}, "");
   see(e, 0.0, Seen().read("B1", "", map::TextClass::kPillar));
-  EXPECT_FALSE(e.belief().decided);  // one reading: 20:1 is not 99:1
+  EXPECT_FALSE(e.belief().decided);  // one reading is not 99:1
   EXPECT_EQ(e.belief().level, "B1");
   see(e, 0.1, Seen().read("B1", "", map::TextClass::kPillar));
   EXPECT_TRUE(e.belief().decided);
@@ -86,7 +86,8 @@ TEST(LevelEstimateTest, OneTextSeenTwiceInAFrameSetCountsOnce) {
       Seen().read("A-1", "", map::TextClass::kPillar).read("A-1", "", map::TextClass::kPillar));
   EXPECT_EQ(once.belief().level, "B2");
   EXPECT_DOUBLE_EQ(once.belief().probability, twice.belief().probability);
-  EXPECT_NEAR(once.belief().probability, 0.8, 1e-9);  // 4:1
+  const double ratio = LevelOptions{}.text_ratio;
+  EXPECT_NEAR(once.belief().probability, ratio / (1.0 + ratio), 1e-9);
 }
 
 TEST(LevelEstimateTest, ThePlaceOfAGatedTextTellsTheLevel) {

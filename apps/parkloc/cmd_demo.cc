@@ -74,6 +74,10 @@ void runDemo(const DemoArgs& a) {
   std::cout << fmt::format("  yaw error            mean {:.2f} deg, p95 {:.2f} deg\n",
                            m.error.abs_yaw_deg.mean, m.error.abs_yaw_deg.p95);
   std::cout << fmt::format(
+      "  level                no level given: estimated, decided on {} / {} frame sets, right "
+      "on {}\n",
+      m.levels.decided, m.levels.frames, m.levels.decided_right);
+  std::cout << fmt::format(
       "  latency per frame    median {:.1f} ms, p95 {:.1f} ms, p99 {:.1f} ms\n",
       m.latency.total_ms.median, m.latency.total_ms.p95, m.latency.total_ms.p99);
   for (const eval::VariantResult& v : report.variants) {

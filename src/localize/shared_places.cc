@@ -8,6 +8,9 @@ namespace {
 
 // Reading directions this close (cosine of 20 degrees) are one direction.
 constexpr double kSameDirectionCos = 0.94;
+// Sizes this close (share of the larger) are one size: the sizes of one text in a map differ by
+// its survey, not by its font.
+constexpr double kSameSizeShare = 0.10;
 
 }  // namespace
 
@@ -17,12 +20,19 @@ bool samePlace(const map::Landmark& a, const map::Landmark& b, double tolerance_
   return a.readingDirection().head<2>().dot(b.readingDirection().head<2>()) >= kSameDirectionCos;
 }
 
+bool interchangeable(const map::Landmark& a, const map::Landmark& b, double tolerance_m) {
+  const auto close = [](double u, double v) {
+    return std::abs(u - v) <= kSameSizeShare * std::max(u, v);
+  };
+  return samePlace(a, b, tolerance_m) && close(a.width, b.width) && close(a.height, b.height);
+}
+
 std::vector<const map::Landmark*> onePerPlace(const std::vector<const map::Landmark*>& landmarks,
                                               const std::string& preferred, double tolerance_m) {
   std::vector<const map::Landmark*> kept;
   for (const map::Landmark* l : landmarks) {
     const auto same = std::find_if(kept.begin(), kept.end(), [&](const map::Landmark* k) {
-      return k->text == l->text && samePlace(*k, *l, tolerance_m);
+      return k->text == l->text && interchangeable(*k, *l, tolerance_m);
     });
     if (same == kept.end())
       kept.push_back(l);

@@ -17,8 +17,13 @@ namespace parkloc::localize {
 // four places).
 bool samePlace(const map::Landmark& a, const map::Landmark& b, double tolerance_m);
 
-// One landmark per place and text: of the landmarks at one place with one text, the one on
-// `preferred` level (else the first). Order is kept.
+// Whether two landmarks at one place also agree in size (width and height within 10 %): only
+// then do their corners fix the pose alike (one level's numbers may be painted in a narrower
+// font than another's at the same place).
+bool interchangeable(const map::Landmark& a, const map::Landmark& b, double tolerance_m);
+
+// One landmark per interchangeable group with one text: the one on `preferred` level (else the
+// first). Order is kept.
 std::vector<const map::Landmark*> onePerPlace(const std::vector<const map::Landmark*>& landmarks,
                                               const std::string& preferred, double tolerance_m);
 

@@ -208,6 +208,11 @@ TEST(SharedPlacesTest, OneLandmarkPerPlaceAndTextOnThePreferredLevel) {
   ASSERT_EQ(kept.size(), 1u);
   EXPECT_EQ(kept[0]->level, "B2");
   EXPECT_EQ(onePerPlace(map.findByText("118"), "B2", 0.3).size(), 2u);  // two places
+  // One place, but painted narrower on B2: its corners would not fix the pose alike.
+  map::Landmark narrow = landmark("117", "B2", 0.0);
+  narrow.width = 0.7;
+  const map::HdMap fonts({landmark("117", "B1", 0.0), narrow}, "two fonts");
+  EXPECT_EQ(onePerPlace(fonts.findByText("117"), "B2", 0.3).size(), 2u);
 }
 
 TEST(SharedPlacesTest, APlaceAsksForTheTextOfEveryLevel) {

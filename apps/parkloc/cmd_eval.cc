@@ -1,6 +1,7 @@
 // parkloc eval DATASET      : the paper's tables 3, 5, 8 and 10 and the report.
 // parkloc eval ocr DATASET  : table 3 only (text spotting), printed and as JSON.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 #include <fstream>
@@ -16,6 +17,7 @@
 #include "eval/tables.h"
 #include "eval/text_outcomes.h"
 #include "io/tum.h"
+#include "map/landmark.h"
 
 namespace {
 
@@ -36,6 +38,8 @@ struct EvalArgs {
   bool no_lexicon = false;
   bool whole_polygons = false;
   bool quiet = false;
+  std::vector<double> map_noise{0.0};
+  uint64_t map_noise_seed = 0;
   app::ConfigArgs config;
   std::string command_line;
 };
@@ -108,6 +112,8 @@ void runEval(const EvalArgs& a) {
   options.oracle = !a.no_oracle;
   options.give_level = a.give_level;
   options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
+  options.map_noise_levels = a.map_noise;
+  options.map_noise_seed = a.map_noise_seed;
   options.progress = [&](const eval::Progress& p) { progress(p); };
   options.title = "parkloc evaluation: " + a.split + " split";
   options.dataset =
@@ -140,6 +146,12 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   cmd->add_flag("--no-oracle", args->no_oracle, "Skip the oracle-OCR variant");
   cmd->add_flag("--give-level", args->give_level,
                 "For comparison: hint each drive's starting level (meta.json) to the pipelines");
+  cmd->add_option("--map-noise", args->map_noise,
+                  "Survey error of the map the pipeline gets (metres, 1 sigma per axis; a list, "
+                  "e.g. 0,0.03,0.10, gives one configuration and one report row each)")
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, map::kMaxPositionSigmaM));
+  cmd->add_option("--map-noise-seed", args->map_noise_seed, "Seed of the map perturbation");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   args->config.addTo(cmd);
 
@@ -175,10 +187,14 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
     if (ocr_cmd->parsed()) return;
     if (args->dataset.empty()) throw CLI::RequiredError("dataset");
     args->command_line =
-        fmt::format("parkloc eval {} --split {}{}{}{}", args->dataset, args->split,
+        fmt::format("parkloc eval {} --split {}{}{}{}{}{}", args->dataset, args->split,
                     args->out.empty() ? "" : " --out " + args->out,
                     args->max_frames ? fmt::format(" --max-frames {}", args->max_frames) : "",
-                    args->no_paper ? " --no-paper" : "");
+                    args->no_paper ? " --no-paper" : "", args->no_oracle ? " --no-oracle" : "",
+                    args->map_noise == std::vector<double>{0.0}
+                        ? ""
+                        : fmt::format(" --map-noise {} --map-noise-seed {}",
+                                      fmt::join(args->map_noise, ","), args->map_noise_seed));
     runEval(*args);
   });
 });

@@ -2,6 +2,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <limits>
 #include <map>
 
@@ -26,6 +28,37 @@ std::vector<double> nearestNumberSpacing(const parkloc::map::HdMap& map) {
   }
   std::sort(spacing.begin(), spacing.end());
   return spacing;
+}
+
+std::string sigmaText(const std::optional<double>& sigma, bool angle) {
+  if (!sigma) return "not stated";
+  return angle ? fmt::format("{:.4f} rad ({:.2f} deg)", *sigma, *sigma * 180.0 / M_PI)
+               : fmt::format("{:.3f} m", *sigma);
+}
+
+// The map-wide accuracy and the sigmas of the landmarks that state their own (a value other
+// than the map-wide one).
+void printAccuracy(const parkloc::map::HdMap& map) {
+  const parkloc::map::MapAccuracy& fallback = map.accuracy();
+  fmt::print("  map-wide accuracy: position_sigma {}, heading_sigma {}\n",
+             sigmaText(fallback.position_sigma, false), sigmaText(fallback.heading_sigma, true));
+  for (const bool heading : {false, true}) {
+    std::vector<double> own;
+    for (const Landmark& l : map.landmarks()) {
+      const auto& sigma = heading ? l.accuracy.heading_sigma : l.accuracy.position_sigma;
+      if (sigma && sigma != (heading ? fallback.heading_sigma : fallback.position_sigma))
+        own.push_back(*sigma);
+    }
+    std::sort(own.begin(), own.end());
+    const char* name = heading ? "heading_sigma" : "position_sigma";
+    if (own.empty()) {
+      fmt::print("  own {}: none of {} landmarks\n", name, map.size());
+      continue;
+    }
+    fmt::print("  own {}: {} of {} landmarks, min {} / median {} / max {}\n", name, own.size(),
+               map.size(), sigmaText(own.front(), heading), sigmaText(own[own.size() / 2], heading),
+               sigmaText(own.back(), heading));
+  }
 }
 
 void printMap(const std::string& path) {
@@ -57,6 +90,7 @@ void printMap(const std::string& path) {
         "  parking-number nearest-neighbour spacing: min {:.2f} m, median {:.2f} m, "
         "max {:.2f} m\n",
         spacing.front(), spacing[spacing.size() / 2], spacing.back());
+  printAccuracy(map);
 }
 
 const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {

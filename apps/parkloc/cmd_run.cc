@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <cstdint>
 #include <memory>
 
 #include "apps/parkloc/command.h"
@@ -21,6 +22,8 @@ struct RunArgs {
   bool oracle = false, paper = false;
   bool no_afm = false, no_mcrp = false, no_mcap = false, no_odometry = false;
   size_t max_frames = 0;
+  double map_noise = 0.0;
+  uint64_t map_noise_seed = 0;
   bool quiet = false;
   std::vector<std::string> inject;
   parkloc::app::ConfigArgs config;
@@ -43,6 +46,7 @@ void run(const RunArgs& a) {
   if (!a.level.empty()) options.pipeline.level = a.level;
   options.oracle = a.oracle;
   options.max_frames = a.max_frames;
+  options.map_noise = {a.map_noise, a.map_noise_seed};
   options.out_dir = a.out;
   options.video_path = a.video;
   if (!a.inject.empty()) {
@@ -107,6 +111,11 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   cmd->add_flag("--no-mcap", args->no_mcap, "Only the nearest landmark");
   cmd->add_flag("--no-odometry", args->no_odometry, "Ignore wheel odometry");
   cmd->add_option("--max-frames", args->max_frames, "Process at most N frame sets (0: all)");
+  cmd->add_option("--map-noise", args->map_noise,
+                  "Localize on the map perturbed by this survey error (metres, 1 sigma per axis; "
+                  "see map/map_noise.h); the error is measured against the truth")
+      ->check(CLI::Range(0.0, parkloc::map::kMaxPositionSigmaM));
+  cmd->add_option("--map-noise-seed", args->map_noise_seed, "Seed of the map perturbation");
   cmd->add_flag("--quiet", args->quiet, "No progress line");
   cmd->add_option("--inject", args->inject,
                   "Inject faults, e.g. dark:front:3-8,drop:0.1 (see run/fault_injection.h)")

@@ -18,7 +18,9 @@
 #include "eval/number_recall.h"
 #include "eval/pose_prediction.h"
 #include "eval/tables.h"
+#include "eval/consistency.h"
 #include "io/sequence.h"
+#include "map/map_noise.h"
 #include "run/oracle_source.h"
 #include "run/sequence_runner.h"
 
@@ -114,7 +116,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
                                    ocr::TextSpotter* spotter, const EvaluationOptions& options) {
   std::vector<VariantTally> tallies;
   for (const VariantSpec& spec : variantSpecs(options, spotter != nullptr)) {
-    tallies.push_back({spec, {}, {}, {}, 0, 0, 0, 0});
+    tallies.push_back({spec, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0});
   }
   const bool shared_ocr = std::any_of(tallies.begin(), tallies.end(), [](const VariantTally& t) {
     return t.spec.source == Source::kSharedFullFrame;
@@ -160,7 +162,11 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         localize::PipelineOptions pipeline_options = tally.spec.options;
         if (options.give_level) pipeline_options.level = sequenceLevel(seq.metaJson());
         run.pipeline = std::make_unique<localize::Pipeline>(
-            seq.rig(), seq.map(), pipeline_options,
+            seq.rig(),
+            tally.spec.map_noise_m > 0.0
+                ? map::perturbedMap(seq.map(), {tally.spec.map_noise_m, options.map_noise_seed})
+                : seq.map(),
+            pipeline_options,
             tally.spec.source == Source::kSpotter ? spotter : nullptr);
       }
       runs.push_back(std::move(run));
@@ -289,6 +295,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
           run.fixed = true;
           ++tally.frames_with_pose;
           run.estimate.push_back({t, result.pose.toRigid3()});
+          run.covariance.push_back(result.covariance);
         }
         if (run.fixed) {
           ++tally.after_fix;
@@ -310,6 +317,15 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     // Errors of this drive, each frame tagged with its conditions.
     for (VariantRun& run : runs) {
       if (run.pipeline) run.tally->levels.add(scoreLevels(run.level_frames));
+      for (size_t k = 0; k < run.covariance.size(); ++k) {
+        const auto truth = run::truthAt(seq.groundTruth(), run.estimate[k].timestamp);
+        if (!truth) continue;
+        const geometry::Pose2 estimate = geometry::Pose2::fromRigid3(run.estimate[k].pose);
+        const Eigen::Vector3d error(estimate.x - truth->x, estimate.y - truth->y,
+                                    std::remainder(estimate.yaw - truth->yaw, 2.0 * M_PI));
+        ++run.tally->nees_frames;
+        run.tally->nees_inside += nees(error, run.covariance[k]) <= ConsistencyOptions{}.nees_bound;
+      }
       const TrajectoryError e = trajectoryError(run.estimate, seq.groundTruth());
       for (const FrameError& f : e.frames) {
         const auto it = std::lower_bound(seq.timestamps().begin(),
@@ -320,8 +336,13 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         run.tally->frames.push_back(f);
         run.tally->frame_tags.push_back(tags_by_frame[index]);
       }
-      if (run.tally->spec.key == main_key && views.size() < options.trajectory_views) {
+      // The main configuration's first drives, and those of each map-noise level.
+      const bool main_or_noisy = run.tally->spec.key == main_key ||
+                                 (run.tally->spec.map_noise_m > 0.0 &&
+                                  run.tally->spec.key.rfind(main_key, 0) == 0);
+      if (main_or_noisy && run.tally->views < options.trajectory_views) {
         views.push_back(makeView(seq, run, t0, t1));
+        ++run.tally->views;
       }
     }
   }

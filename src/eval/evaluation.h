@@ -33,6 +33,13 @@ struct EvaluationOptions {
   size_t max_frames_per_sequence = 0;         // 0: all
   size_t trajectory_views = 2;                // drives drawn in the report
   localize::PipelineOptions parkloc_options;  // for parkloc and the oracle
+  // Survey error (map/map_noise.h): the main configuration (parkloc, else the oracle) runs on
+  // the map perturbed by each of these position sigmas (metres), one configuration each, the
+  // first being the main one itself; errors are measured against the truth all the same. The
+  // map of a garage is perturbed once per level with the same seed, so its drives share one
+  // survey.
+  std::vector<double> map_noise_levels{0.0};
+  uint64_t map_noise_seed = 0;
   OcrEvaluationOptions ocr_metrics;
   ProgressCallback progress;
   std::string title = "parkloc evaluation";

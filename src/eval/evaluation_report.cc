@@ -87,6 +87,18 @@ EvaluationReport assembleReport(const EvaluationOptions& options, const Evaluati
       if (auto r = result(key)) rows.push_back(*r);
     report.tables.push_back(levelTable(rows));
   }
+  {
+    // The main configuration at each map-noise level, when any is perturbed.
+    std::vector<MapNoiseRow> rows;
+    bool perturbed = false;
+    for (const VariantTally& t : tallies) {
+      if (t.spec.key != totals.main_key && t.spec.key.rfind(totals.main_key + "_map_noise_", 0))
+        continue;
+      perturbed = perturbed || t.spec.map_noise_m > 0.0;
+      rows.push_back({t.spec.map_noise_m, toResult(t), t.nees_frames, t.nees_inside});
+    }
+    if (perturbed) report.tables.push_back(mapNoiseTable(rows));
+  }
   for (const VariantTally& t : tallies) report.variants.push_back(toResult(t));
   report.notes.push_back(fmt::format(
       "{} sequences, {} frame sets. Position error: evo-style APE (translation, no alignment, "

@@ -8,10 +8,33 @@
 
 namespace parkloc::eval::detail {
 
+namespace {
+// The main configuration once per map-noise level: the first level is the configuration
+// itself, each further one a copy on a perturbed map.
+void addWithMapNoise(const VariantSpec& main, const EvaluationOptions& o,
+                     std::vector<VariantSpec>& specs) {
+  const std::vector<double> levels =
+      o.map_noise_levels.empty() ? std::vector<double>{0.0} : o.map_noise_levels;
+  for (size_t i = 0; i < levels.size(); ++i) {
+    VariantSpec s = main;
+    s.map_noise_m = levels[i];
+    if (i > 0) {
+      s.key = fmt::format("{}_map_noise_{:g}cm", main.key, levels[i] * 100.0);
+      s.title = fmt::format("{}, map noise {:g} cm", main.title, levels[i] * 100.0);
+    } else if (levels[i] > 0.0) {
+      s.title = fmt::format("{}, map noise {:g} cm", main.title, levels[i] * 100.0);
+    }
+    specs.push_back(s);
+  }
+}
+}  // namespace
+
 std::vector<VariantSpec> variantSpecs(const EvaluationOptions& o, bool have_spotter) {
   std::vector<VariantSpec> specs;
-  if (o.parkloc && have_spotter) {
-    specs.push_back({"parkloc", "parkloc (full pipeline)", Source::kSpotter, o.parkloc_options});
+  const bool parkloc_main = o.parkloc && have_spotter;
+  if (parkloc_main) {
+    addWithMapNoise({"parkloc", "parkloc (full pipeline)", Source::kSpotter, o.parkloc_options}, o,
+                    specs);
   }
   if (o.paper_ablation && have_spotter) {
     // The paper's Table 10 row order.
@@ -43,8 +66,12 @@ std::vector<VariantSpec> variantSpecs(const EvaluationOptions& o, bool have_spot
     specs.push_back(s);
   }
   if (o.oracle) {
-    specs.push_back({"oracle", "parkloc on ground-truth text (oracle OCR)", Source::kOracle,
-                     o.parkloc_options});
+    const VariantSpec oracle{"oracle", "parkloc on ground-truth text (oracle OCR)", Source::kOracle,
+                             o.parkloc_options};
+    if (parkloc_main)
+      specs.push_back(oracle);
+    else
+      addWithMapNoise(oracle, o, specs);
   }
   if (o.odometry_only) {
     specs.push_back({"odometry_only", "odometry-only dead reckoning", Source::kOdometry, {}});

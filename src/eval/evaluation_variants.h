@@ -32,6 +32,7 @@ struct VariantSpec {
   localize::PipelineOptions options;
   bool afm = false, mcrp = false, mcap = false;
   bool ablation = false;
+  double map_noise_m = 0.0;  // the pipeline's map perturbed by this survey error (0: exact)
 };
 
 // What one variant accumulates over all sequences.
@@ -42,6 +43,10 @@ struct VariantTally {
   std::vector<FrameTiming> timings;
   size_t frames_total = 0, frames_with_pose = 0, after_fix = 0, with_pose_after_fix = 0;
   LevelScore levels;
+  // The reported covariance against the truth: frames with a pose and truth, and those whose
+  // NEES lies inside the 95 % chi-square bound (eval/consistency.h).
+  size_t nees_frames = 0, nees_inside = 0;
+  size_t views = 0;  // drives drawn in the report
 };
 
 // One variant's state within a sequence.
@@ -50,6 +55,7 @@ struct VariantRun {
   std::unique_ptr<localize::Pipeline> pipeline;
   std::unique_ptr<DeadReckoning> dead_reckoning;
   std::vector<io::StampedPose> estimate;
+  std::vector<Eigen::Matrix3d> covariance;  // of each estimate
   std::set<std::string> levels;  // levels of the landmarks it used (for the map plot)
   std::vector<LevelFrame> level_frames;
   bool fixed = false;

@@ -67,6 +67,15 @@ Table table8(
 
 Table table5(const std::vector<VariantResult>& variants);
 
+// One row per map-noise level (eval/evaluation.h): the survey error the pipeline's map was
+// given, its position and yaw errors, and how often its covariance was honest.
+struct MapNoiseRow {
+  double noise_m = 0.0;
+  VariantResult result;
+  size_t nees_frames = 0, nees_inside = 0;
+};
+Table mapNoiseTable(const std::vector<MapNoiseRow>& rows);
+
 // Latency per stage (median / p95 / p99 / max, ms) of each variant, and the whole frame set.
 Table latencyTable(const std::vector<VariantResult>& variants);
 

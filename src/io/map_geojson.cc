@@ -61,7 +61,16 @@ class FeatureReader {
     return out;
   }
 
-  map::Landmark read() {
+  // The optional sigma properties; `fallback` (the map-wide default) where absent.
+  map::MapAccuracy accuracyOf(const json& props, const map::MapAccuracy& fallback) const {
+    map::MapAccuracy a = fallback;
+    if (props.contains("position_sigma")) a.position_sigma = numberProperty(props, "position_sigma");
+    if (props.contains("heading_sigma")) a.heading_sigma = numberProperty(props, "heading_sigma");
+    if (const std::string problem = map::accuracyProblem(a); !problem.empty()) fail(problem);
+    return a;
+  }
+
+  map::Landmark read(const map::MapAccuracy& map_accuracy) {
     if (!feature_.is_object()) fail("expected a JSON object");
     if (typeOf(feature_) != "Feature") fail("'type' must be \"Feature\"");
     const auto props_it = feature_.find("properties");
@@ -98,6 +107,7 @@ class FeatureReader {
     l.surface = *parsed_surface;
     if (l.surface == map::Surface::kVertical || props.contains("normal"))
       l.normal = vectorOf(property(props, "normal"), "property 'normal'", false);
+    l.accuracy = accuracyOf(props, map_accuracy);
     return l;
   }
 
@@ -107,6 +117,27 @@ class FeatureReader {
   const json& feature_;
   std::string id_;
 };
+
+// The FeatureCollection's own "properties": the map-wide accuracy its features default to.
+map::MapAccuracy mapAccuracy(const json& doc, const std::string& source) {
+  map::MapAccuracy a;
+  const auto props = doc.find("properties");
+  if (props == doc.end() || props->is_null()) return a;
+  const auto fail = [&](const std::string& what) {
+    throw InputError(fmt::format("map {}: map-wide properties: {}", source, what));
+  };
+  if (!props->is_object()) fail(fmt::format("expected an object, got {}", props->type_name()));
+  for (const char* key : {"position_sigma", "heading_sigma"}) {
+    const auto it = props->find(key);
+    if (it == props->end()) continue;
+    if (!it->is_number())
+      fail(fmt::format("'{}': expected a number, got {}", key, it->type_name()));
+    (std::string(key) == "position_sigma" ? a.position_sigma : a.heading_sigma) =
+        it->get<double>();
+  }
+  if (const std::string problem = map::accuracyProblem(a); !problem.empty()) fail(problem);
+  return a;
+}
 
 std::string stripJsonExceptionPrefix(const std::string& what) {
   // "[json.exception.parse_error.101] parse error at line 1, ..." -> "parse error at ..."
@@ -136,12 +167,13 @@ map::HdMap parseMap(const std::string& geojson_text, const std::string& source_n
   std::string name;
   if (const auto n = doc.find("name"); n != doc.end() && n->is_string())
     name = n->get<std::string>();
+  const map::MapAccuracy accuracy = mapAccuracy(doc, source_name);
 
   std::vector<map::Landmark> landmarks;
   landmarks.reserve(features->size());
   std::map<std::string, size_t> first_index_of_id;
   for (size_t i = 0; i < features->size(); ++i) {
-    landmarks.push_back(FeatureReader(source_name, i, (*features)[i]).read());
+    landmarks.push_back(FeatureReader(source_name, i, (*features)[i]).read(accuracy));
     const auto [it, inserted] = first_index_of_id.emplace(landmarks.back().id, i);
     if (!inserted)
       throw InputError(fmt::format("map {}: feature #{}: duplicate id '{}' (first at feature #{})",
@@ -150,7 +182,7 @@ map::HdMap parseMap(const std::string& geojson_text, const std::string& source_n
   // Remaining checks (parking number twice on a level, sizes, normals) are the map's own.
   if (const std::string problem = map::HdMap::validate(landmarks); !problem.empty())
     throw InputError(fmt::format("map {}: {}", source_name, problem));
-  return map::HdMap(std::move(landmarks), name);
+  return map::HdMap(std::move(landmarks), name, accuracy);
 }
 
 map::HdMap loadMap(const std::string& path) {
@@ -167,6 +199,13 @@ std::string mapToGeoJson(const map::HdMap& map) {
   std::string out = "{\"type\": \"FeatureCollection\",\n";
   if (!map.name().empty()) out += " \"name\": " + ordered(map.name()).dump() + ",\n";
   out += " \"crs\": \"local metric frame: metres, x east, y north, z up\",\n";
+  const map::MapAccuracy& accuracy = map.accuracy();
+  if (accuracy.position_sigma || accuracy.heading_sigma) {
+    ordered props = ordered::object();
+    if (accuracy.position_sigma) props["position_sigma"] = *accuracy.position_sigma;
+    if (accuracy.heading_sigma) props["heading_sigma"] = *accuracy.heading_sigma;
+    out += " \"properties\": " + props.dump() + ",\n";
+  }
   out += " \"features\": [";
   const auto& landmarks = map.landmarks();
   for (size_t i = 0; i < landmarks.size(); ++i) {
@@ -181,6 +220,11 @@ std::string mapToGeoJson(const map::HdMap& map) {
                      {"surface", map::toString(l.surface)}};
     if (l.surface == map::Surface::kVertical || l.normal != Eigen::Vector3d::UnitZ())
       props["normal"] = {l.normal.x(), l.normal.y(), l.normal.z()};
+    // A feature states its own sigma where it differs from the map-wide default.
+    if (l.accuracy.position_sigma && l.accuracy.position_sigma != accuracy.position_sigma)
+      props["position_sigma"] = *l.accuracy.position_sigma;
+    if (l.accuracy.heading_sigma && l.accuracy.heading_sigma != accuracy.heading_sigma)
+      props["heading_sigma"] = *l.accuracy.heading_sigma;
     const ordered feature = {
         {"type", "Feature"},
         {"geometry",

@@ -23,10 +23,13 @@ long long cellIndex(double coordinate, double cell_size) {
 }
 }  // namespace
 
-HdMap::HdMap(std::vector<Landmark> landmarks, std::string name)
-    : name_(std::move(name)), landmarks_(std::move(landmarks)) {
+HdMap::HdMap(std::vector<Landmark> landmarks, std::string name, MapAccuracy accuracy)
+    : name_(std::move(name)), accuracy_(accuracy), landmarks_(std::move(landmarks)) {
+  const std::string who = "map " + (name_.empty() ? std::string("(unnamed)") : name_) + ": ";
+  if (const std::string problem = accuracyProblem(accuracy_); !problem.empty())
+    throw InputError(who + "map-wide " + problem);
   if (const std::string problem = validate(landmarks_); !problem.empty())
-    throw InputError("map " + (name_.empty() ? std::string("(unnamed)") : name_) + ": " + problem);
+    throw InputError(who + problem);
   for (size_t i = 0; i < landmarks_.size(); ++i) {
     by_text_.emplace(landmarks_[i].text, i);
     by_id_.emplace(landmarks_[i].id, i);
@@ -46,6 +49,8 @@ std::string HdMap::validate(const std::vector<Landmark>& landmarks) {
         !std::isfinite(l.height) || !l.normal.allFinite())
       return who + ": non-finite value";
     if (l.width <= 0.0 || l.height <= 0.0) return who + ": width and height must be positive";
+    if (const std::string problem = accuracyProblem(l.accuracy); !problem.empty())
+      return who + ": " + problem;
     if (l.surface == Surface::kVertical && std::abs(l.normal.norm() - 1.0) > 1e-3)
       return who + ": vertical text needs a unit face normal";
     if (l.cls == TextClass::kParkingNumber && !numbers.insert({l.level, l.text}).second)

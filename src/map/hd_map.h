@@ -14,9 +14,13 @@ class HdMap {
  public:
   HdMap() = default;
   // Checks the landmarks (see validate) and builds the indexes; throws InputError.
-  explicit HdMap(std::vector<Landmark> landmarks, std::string name = "");
+  // `accuracy` is the map-wide default the file states (its landmarks carry it already where
+  // they state none of their own).
+  explicit HdMap(std::vector<Landmark> landmarks, std::string name = "",
+                 MapAccuracy accuracy = {});
 
   const std::string& name() const { return name_; }
+  const MapAccuracy& accuracy() const { return accuracy_; }
   const std::vector<Landmark>& landmarks() const { return landmarks_; }
   size_t size() const { return landmarks_.size(); }
 
@@ -29,7 +33,7 @@ class HdMap {
                                             const std::string& level = "") const;
 
   // Empty when valid, else the first problem: duplicate id, a parking number twice on one
-  // level, non-finite or non-positive size, empty text.
+  // level, non-finite or non-positive size, empty text, a sigma out of range.
   static std::string validate(const std::vector<Landmark>& landmarks);
 
  private:
@@ -37,6 +41,7 @@ class HdMap {
   CellKey cellOf(const Eigen::Vector2d& p) const;
 
   std::string name_;
+  MapAccuracy accuracy_;
   std::vector<Landmark> landmarks_;
   std::unordered_multimap<std::string, size_t> by_text_;
   std::unordered_map<std::string, size_t> by_id_;

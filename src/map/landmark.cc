@@ -1,6 +1,7 @@
 #include "map/landmark.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace parkloc::map {
 
@@ -48,6 +49,27 @@ std::array<Eigen::Vector3d, 4> Landmark::corners() const {
   const Eigen::Vector3d r = 0.5 * width * readingDirection();
   const Eigen::Vector3d u = 0.5 * height * upDirection();
   return {position - r + u, position + r + u, position + r - u, position - r - u};
+}
+
+namespace {
+std::string sigmaProblem(const char* name, const std::optional<double>& sigma, double bound,
+                         const char* unit) {
+  if (!sigma) return "";
+  if (!std::isfinite(*sigma) || *sigma < 0.0 || *sigma > bound) {
+    std::ostringstream out;
+    out << name << ": " << *sigma << " is not a sigma in [0, " << bound << "] " << unit;
+    return out.str();
+  }
+  return "";
+}
+}  // namespace
+
+std::string accuracyProblem(const MapAccuracy& accuracy) {
+  if (std::string p = sigmaProblem("position_sigma", accuracy.position_sigma, kMaxPositionSigmaM,
+                                   "m");
+      !p.empty())
+    return p;
+  return sigmaProblem("heading_sigma", accuracy.heading_sigma, kMaxHeadingSigmaRad, "rad");
 }
 
 }  // namespace parkloc::map

@@ -71,7 +71,11 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
   checkFaultCameras(options.faults, sequence.rig());
   FaultInjector injector(options.faults, sequence.timestamps(), sequence.groundTruth(),
                          sequence.odometry());
-  localize::Pipeline pipeline(sequence.rig(), sequence.map(), options.pipeline,
+  localize::Pipeline pipeline(sequence.rig(),
+                              options.map_noise.position_sigma_m > 0.0
+                                  ? map::perturbedMap(sequence.map(), options.map_noise)
+                                  : sequence.map(),
+                              options.pipeline,
                               injector.wrapSpotter(spotter));
   const auto& timestamps = sequence.timestamps();
   size_t count = timestamps.size();

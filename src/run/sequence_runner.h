@@ -9,6 +9,7 @@
 
 #include "io/sequence.h"
 #include "localize/pipeline.h"
+#include "map/map_noise.h"
 #include "ocr/text_spotter.h"
 #include "run/fault_injection.h"
 
@@ -22,6 +23,9 @@ struct RunOptions {
   std::string video_path;  // annotated mp4; empty: none
   std::function<void(size_t done, size_t total)> progress;
   InputFaults faults;  // injected sensor faults (`parkloc run --inject`); none by default
+  // Survey error (`parkloc run --map-noise`): the pipeline gets the sequence's map perturbed
+  // (map/map_noise.h); the error is still measured against poses.tum. 0: the map as it is.
+  map::MapNoise map_noise;
 };
 
 struct RunSummary {

@@ -123,6 +123,33 @@ TEST_F(EvaluationTest, WithoutASpotterTheOracleIsTheMainVariant) {
   EXPECT_EQ(r.main.frames, 20u);
 }
 
+TEST_F(EvaluationTest, EachMapNoiseLevelIsAConfigurationAndARow) {
+  EvaluationOptions options;
+  options.odometry_only = false;
+  const auto hasTable = [](const EvaluationReport& r, const std::string& key) {
+    return std::any_of(r.tables.begin(), r.tables.end(),
+                       [&](const Table& t) { return t.key == key; });
+  };
+  const EvaluationReport exact = evaluateSequences(splitSequences(root_, "test"), nullptr, options);
+  EXPECT_FALSE(hasTable(exact, "map_noise"));
+  EXPECT_EQ(exact.variants.size(), 1u);
+
+  options.map_noise_levels = {0.0, 0.03, 0.10};
+  const EvaluationReport r = evaluateSequences(splitSequences(root_, "test"), nullptr, options);
+  ASSERT_EQ(r.variants.size(), 3u);
+  EXPECT_EQ(r.variants[0].key, "oracle");
+  EXPECT_EQ(r.variants[1].key, "oracle_map_noise_3cm");
+  EXPECT_EQ(r.variants[2].key, "oracle_map_noise_10cm");
+  EXPECT_EQ(r.main.key, "oracle");
+  ASSERT_TRUE(hasTable(r, "map_noise"));
+  const auto table = std::find_if(r.tables.begin(), r.tables.end(),
+                                  [](const Table& t) { return t.key == "map_noise"; });
+  ASSERT_EQ(table->rows.size(), 3u);
+  EXPECT_EQ(table->rows[2][0].text, "10.0");
+  // Trajectory plots of the exact and of each perturbed map.
+  EXPECT_EQ(r.trajectories.size(), 3u);
+}
+
 // Finds nothing; notes whether each full-frame request asked for second opinions.
 class RequestRecordingSpotter : public ocr::TextSpotter {
  public:

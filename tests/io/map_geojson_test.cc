@@ -177,5 +177,94 @@ TEST_F(MapGeoJsonTest, SameParkingNumberOnTwoLevelsIsFine) {
   EXPECT_EQ(errorFor(collection(feature(kGood) + "," + feature(other_level))), "");
 }
 
+
+std::string collectionWith(const std::string& map_properties, const std::string& features) {
+  return R"({"type": "FeatureCollection", "properties": )" + map_properties +
+         R"(, "features": [)" + features + "]}";
+}
+
+TEST_F(MapGeoJsonTest, SigmasAreAbsentWhenTheMapStatesNone) {
+  const map::HdMap m = parseMap(collection(feature(kGood)), "m.geojson");
+  EXPECT_FALSE(m.accuracy().position_sigma);
+  EXPECT_FALSE(m.accuracy().heading_sigma);
+  EXPECT_FALSE(m.landmarks()[0].accuracy.position_sigma);
+  EXPECT_FALSE(m.landmarks()[0].accuracy.heading_sigma);
+}
+
+TEST_F(MapGeoJsonTest, FeatureSigmaOverridesTheMapWideDefault) {
+  const std::string own = kGood + R"(, "position_sigma": 0.25)";
+  const std::string b = R"("id": "b", "text": "B1-102", "class": "parking_number", "level": "B1",
+      "heading": 0.5, "width": 1.0, "height": 0.5, "surface": "ground", "heading_sigma": 0.02)";
+  const map::HdMap m = parseMap(
+      collectionWith(R"({"position_sigma": 0.05, "heading_sigma": 0.01})",
+                     feature(own) + "," + feature(b)),
+      "m.geojson");
+  EXPECT_EQ(m.accuracy().position_sigma, 0.05);
+  EXPECT_EQ(m.accuracy().heading_sigma, 0.01);
+  EXPECT_EQ(m.landmarks()[0].accuracy.position_sigma, 0.25);
+  EXPECT_EQ(m.landmarks()[0].accuracy.heading_sigma, 0.01);  // the map's
+  EXPECT_EQ(m.landmarks()[1].accuracy.position_sigma, 0.05);  // the map's
+  EXPECT_EQ(m.landmarks()[1].accuracy.heading_sigma, 0.02);
+}
+
+TEST_F(MapGeoJsonTest, SigmasRoundTrip) {
+  std::vector<map::Landmark> landmarks;
+  for (int i = 0; i < 4; ++i) landmarks.push_back(groundNumber("B1-" + std::to_string(i), i, 0, 0));
+  const map::MapAccuracy fallback{0.1 / 3.0, 0.004};
+  for (auto& l : landmarks) l.accuracy = fallback;
+  landmarks[1].accuracy.position_sigma = 1.0 / 7.0;
+  landmarks[2].accuracy.heading_sigma = 0.0;
+  landmarks[3].accuracy = {};  // states nothing, and the map has a default: reads as the default
+  const map::HdMap original(landmarks, "sigmas", fallback);
+  saveMap(original, path("map.geojson"));
+  const map::HdMap back = loadMap(path("map.geojson"));
+  EXPECT_EQ(back.accuracy(), fallback);
+  for (size_t i = 0; i < 3; ++i)
+    EXPECT_EQ(back.landmarks()[i].accuracy, original.landmarks()[i].accuracy) << i;
+  EXPECT_EQ(back.landmarks()[3].accuracy, fallback);
+  EXPECT_EQ(mapToGeoJson(back), mapToGeoJson(original));
+  // The map-wide default is written once, at the top, and not per feature.
+  const std::string text = mapToGeoJson(back);
+  EXPECT_NE(text.find(R"("properties": {"position_sigma":)"), std::string::npos) << text;
+  size_t features_with_position_sigma = 0;
+  for (size_t at = text.find("\"position_sigma\""); at != std::string::npos;
+       at = text.find("\"position_sigma\"", at + 1))
+    ++features_with_position_sigma;
+  EXPECT_EQ(features_with_position_sigma, 2u);  // the map's and landmark 1's
+}
+
+TEST_F(MapGeoJsonTest, BadFeatureSigmaNamesTheFeature) {
+  EXPECT_EQ(errorFor(collection(feature(kGood + R"(, "position_sigma": -0.01)"))),
+            "map m.geojson: feature #0 (id 'a'): position_sigma: -0.01 is not a sigma in [0, 10] m");
+  EXPECT_EQ(errorFor(collection(feature(kGood + R"(, "position_sigma": 10.5)"))),
+            "map m.geojson: feature #0 (id 'a'): position_sigma: 10.5 is not a sigma in [0, 10] m");
+  EXPECT_EQ(errorFor(collection(feature(kGood + R"(, "heading_sigma": 0.6)"))),
+            "map m.geojson: feature #0 (id 'a'): heading_sigma: 0.6 is not a sigma in [0, 0.5] rad");
+  EXPECT_EQ(errorFor(collection(feature(kGood + R"(, "heading_sigma": "1 deg")"))),
+            "map m.geojson: feature #0 (id 'a'): property 'heading_sigma': expected a number, got "
+            "string");
+  EXPECT_EQ(errorFor(collection(feature(kGood + R"(, "position_sigma": 1e400)"))).rfind(
+                "map m.geojson: malformed JSON", 0),
+            0u);
+}
+
+TEST_F(MapGeoJsonTest, BadMapWideSigmaIsOneLine) {
+  EXPECT_EQ(errorFor(collectionWith(R"({"position_sigma": -1})", feature(kGood))),
+            "map m.geojson: map-wide properties: position_sigma: -1 is not a sigma in [0, 10] m");
+  EXPECT_EQ(errorFor(collectionWith(R"({"heading_sigma": 3.2})", feature(kGood))),
+            "map m.geojson: map-wide properties: heading_sigma: 3.2 is not a sigma in [0, 0.5] rad");
+  EXPECT_EQ(errorFor(collectionWith(R"({"heading_sigma": null})", feature(kGood))),
+            "map m.geojson: map-wide properties: 'heading_sigma': expected a number, got null");
+  EXPECT_EQ(errorFor(collectionWith("[1, 2]", feature(kGood))),
+            "map m.geojson: map-wide properties: expected an object, got array");
+}
+
+TEST_F(MapGeoJsonTest, MapBuiltInCodeRejectsANonFiniteSigma) {
+  map::Landmark l = groundNumber("B1-1", 0, 0, 0);
+  l.accuracy.position_sigma = std::nan("");
+  EXPECT_THROW(map::HdMap({l}), InputError);
+  EXPECT_THROW(map::HdMap({}, "", map::MapAccuracy{std::nullopt, -1e-3}), InputError);
+}
+
 }  // namespace
 }  // namespace parkloc::io

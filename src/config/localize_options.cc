@@ -127,6 +127,14 @@ void describe(OptionVisitor& v, localize::SolverOptions& o) {
   v.value("centre_fallback_px", o.centre_fallback_px,
           "an outlier whose centre lies this near its prediction keeps its centre (0: off)");
   v.value("max_hypotheses", o.max_hypotheses, "single-text hypotheses tried, the largest texts");
+  v.value("assumed_map_position_sigma_m", o.assumed_map_position_sigma_m,
+          "a landmark's position error (1 sigma per axis, m) where the map states none (0: exact)");
+  v.value("assumed_map_heading_sigma_deg", o.assumed_map_heading_sigma_deg,
+          "a landmark's heading error (1 sigma, degrees) where the map states none (0: exact)");
+  v.value("map_size_sigma", o.map_size_sigma,
+          "a map stating its accuracy gives nominal painted sizes: relative error, 1 sigma");
+  v.value("assumed_map_size_sigma", o.assumed_map_size_sigma,
+          "a map stating no accuracy: relative size error (0: exact ink boxes)");
 }
 
 void describe(OptionVisitor& v, localize::MeasurementOptions& o) {
@@ -137,6 +145,8 @@ void describe(OptionVisitor& v, localize::MeasurementOptions& o) {
            "what a text's polygon measures in the solver");
   v.value("fix_covariance_inflation", o.fix_covariance_inflation,
           "OCR corner errors are correlated: the filter sees the fix covariance this much wider");
+  v.value("map_covariance_floor", o.map_covariance_floor,
+          "the filter keeps at least this times a fix's map-error covariance (0: off)");
 }
 
 void describe(OptionVisitor& v, localize::TrackingOptions& o) {
@@ -154,6 +164,8 @@ void describe(OptionVisitor& v, localize::TrackingOptions& o) {
   v.value("initial_position_sigma_m", o.initial_position_sigma_m,
           "uncertainty of a given initial pose (1 sigma)");
   v.value("initial_yaw_sigma_deg", o.initial_yaw_sigma_deg, "... its heading");
+  v.value("map_reuse_cap", o.map_reuse_cap,
+          "a landmark's map error informs the filter about once: its n-th fusion weighs 1/n");
 }
 
 void describe(OptionVisitor& v, localize::PaperPipelineOptions& o) {

@@ -94,6 +94,7 @@ AssociatedObservations Associator::associate(const std::vector<CameraResult>& ca
           o.map_corners = floors_.cornersAboveFloor(landmark);
           o.tag = tag;
           o.use_corners = use_corners;
+          o.accuracy = landmark.accuracy;
           return o;
         };
         LandmarkObservation o;

@@ -26,8 +26,10 @@ std::optional<GateResult> gateObservation(const geometry::RigCamera& camera,
 
   Eigen::Matrix3d P = covariance;
   const double floor_sigma = options.min_radius_m / 3.0;
-  P(0, 0) += floor_sigma * floor_sigma;
-  P(1, 1) += floor_sigma * floor_sigma;
+  // The landmark's stated map error moves its projected centre as the vehicle's position does.
+  const double map_sigma = observation.accuracy.position_sigma.value_or(0.0);
+  P(0, 0) += floor_sigma * floor_sigma + map_sigma * map_sigma;
+  P(1, 1) += floor_sigma * floor_sigma + map_sigma * map_sigma;
   const Eigen::Matrix2d S = J * P * J.transpose() + options.centre_sigma_px *
                                                         options.centre_sigma_px *
                                                         Eigen::Matrix2d::Identity();

@@ -6,6 +6,8 @@
 #include <array>
 #include <string>
 
+#include "map/landmark.h"
+
 namespace parkloc::localize {
 
 struct LandmarkObservation {
@@ -19,6 +21,9 @@ struct LandmarkObservation {
   // boxes hold the text but whose corners are not the text's (padded, unsheared boxes of
   // text seen at a grazing angle); the centre stays where the ink is.
   bool use_corners = true;
+  // What the map states of the landmark's accuracy (empty: the solver's assumption,
+  // SolverOptions::assumed_map_*).
+  map::MapAccuracy accuracy;
 };
 
 // What a text's polygon measures in the solver. Corners: all four corners (exact polygons,

@@ -19,13 +19,17 @@ void markSolve(const std::vector<LandmarkObservation>& obs, const SolverResult& 
   }
 }
 
-// The number of distinct landmarks among the solve's inliers.
-int landmarksIn(const std::vector<LandmarkObservation>& obs, const SolverResult& s) {
+// The distinct landmarks among the solve's inliers.
+std::vector<std::string> landmarkIds(const std::vector<LandmarkObservation>& obs,
+                                     const SolverResult& s) {
   std::vector<std::string> ids;
-  for (size_t o = 0; o < obs.size(); ++o)
+  for (size_t o = 0; o < obs.size() && o < s.inlier.size(); ++o)
     if (s.inlier[o] && std::find(ids.begin(), ids.end(), obs[o].landmark_id) == ids.end())
       ids.push_back(obs[o].landmark_id);
-  return static_cast<int>(ids.size());
+  return ids;
+}
+int landmarksIn(const std::vector<LandmarkObservation>& obs, const SolverResult& s) {
+  return static_cast<int>(landmarkIds(obs, s).size());
 }
 
 }  // namespace
@@ -33,14 +37,19 @@ int landmarksIn(const std::vector<LandmarkObservation>& obs, const SolverResult&
 Eigen::Matrix3d fixCovariance(const SolverResult& fix, double pixel_sigma,
                               const MeasurementOptions& options) {
   const double fit = pixel_sigma > 0.0 ? fix.rms_px / pixel_sigma : 0.0;
-  Eigen::Matrix3d R = options.fix_covariance_inflation * std::max(1.0, fit * fit) * fix.covariance;
+  Eigen::Matrix3d R =
+      options.fix_covariance_inflation * std::max(1.0, fit * fit) *
+          (fix.covariance - fix.map_covariance) +
+      fix.map_covariance;
   const double yaw_floor = 0.05 * M_PI / 180.0;
   R.diagonal() += Eigen::Vector3d(1e-4, 1e-4, yaw_floor * yaw_floor);  // 1e-4 m^2: (1 cm)^2
   return R;
 }
 
-PoseFix ParklocMeasurement::toFix(const SolverResult& solve) const {
-  return {solve.pose, fixCovariance(solve, solver_.pixel_sigma, options_)};
+PoseFix ParklocMeasurement::toFix(const SolverResult& solve,
+                                  const std::vector<LandmarkObservation>& obs) const {
+  return {solve.pose, fixCovariance(solve, solver_.pixel_sigma, options_), solve.map_covariance,
+          landmarkIds(obs, solve), options_.map_covariance_floor * solve.map_covariance};
 }
 
 FrameFixes ParklocMeasurement::whileTracking(const std::vector<LandmarkObservation>& accepted,
@@ -53,7 +62,7 @@ FrameFixes ParklocMeasurement::whileTracking(const std::vector<LandmarkObservati
     result.solver_converged = s.converged;
     markSolve(accepted, s, result);
     if (s.ok) {
-      const PoseFix fix = toFix(s);
+      const PoseFix fix = toFix(s, accepted);
       result.measurement = fix.pose;
       result.measurement_covariance = fix.covariance;
       if (ekf.mahalanobis2(fix.pose, fix.covariance) <= tracking_.fix_gate_chi2) {
@@ -72,7 +81,9 @@ FrameFixes ParklocMeasurement::whileTracking(const std::vector<LandmarkObservati
     std::vector<LandmarkObservation> all = accepted;
     all.insert(all.end(), gated.begin(), gated.end());
     const SolverResult s = solvePose(rig_, all, std::nullopt, solver_);
-    const PoseFix fix = s.ok ? toFix(s) : PoseFix{s.pose, Eigen::Matrix3d::Zero()};
+    PoseFix fix;
+    fix.pose = s.pose;
+    if (s.ok) fix = toFix(s, all);
     if (s.ok && ekf.mahalanobis2(fix.pose, fix.covariance) > tracking_.fix_gate_chi2) {
       fixes.disagreeing = fix;
       fixes.disagreeing_landmarks = landmarksIn(all, s);
@@ -103,7 +114,7 @@ FrameFixes ParklocMeasurement::whileSearching(const std::vector<LandmarkObservat
     return fixes;
   }
   // Reported whether or not it starts the filter.
-  const PoseFix fix = toFix(s);
+  const PoseFix fix = toFix(s, accepted);
   result.measurement = fix.pose;
   result.measurement_covariance = fix.covariance;
   const double sigma = positionSigma(fix.covariance);

@@ -27,13 +27,20 @@ struct MeasurementOptions {
   // (rms / pixel_sigma)^2 when the corners fit worse than pixel_sigma). Chosen on the
   // validation drives: the NEES inside its 95 % bound on 69 / 97 / 95 % of their frames.
   double fix_covariance_inflation = 8.0;
+  // The map's share of a fix's covariance (SolverResult::map_covariance) is the same error in
+  // every frame that sees the same landmarks, so fusing frame after frame cannot shrink it:
+  // a fusion does not take the filter's pose covariance below the smaller of what it was and
+  // this times that share (PoseEkf::update). 0: off.
+  double map_covariance_floor = 2.0;
 };
 
-// A fix's covariance as the filter sees it: inflated, grown by how much worse than the
-// assumed pixel noise the corners fit (a-posteriori variance factor: a fix from one text seen
+// A fix's covariance as the filter sees it: its pixel-noise part (covariance less
+// map_covariance) inflated, grown by how much worse than the assumed pixel noise the corners
+// fit (a-posteriori variance factor: a fix from one text seen
 // at a grazing angle whose corners fit to 6 px must not count as one that fits to 1), with a
 // floor of 1 cm and 0.05 degrees, so that no fix, however many exact corners it rests on,
-// tells the filter it is exact.
+// tells the filter it is exact. The map's part is added as it is: it comes from the map's
+// stated sigmas, not from the corners' fit.
 Eigen::Matrix3d fixCovariance(const SolverResult& fix, double pixel_sigma,
                               const MeasurementOptions& options);
 
@@ -56,7 +63,7 @@ class ParklocMeasurement {
                             FrameResult& result) const;
 
  private:
-  PoseFix toFix(const SolverResult& solve) const;
+  PoseFix toFix(const SolverResult& solve, const std::vector<LandmarkObservation>& obs) const;
 
   const geometry::Rig& rig_;
   SolverOptions solver_;

@@ -1,6 +1,7 @@
 #include "localize/pose_ekf.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <cmath>
 
@@ -104,6 +105,45 @@ void PoseEkf::update(const geometry::Pose2& fix, const Eigen::Matrix3d& R) {
   StateMatrix I_KH = StateMatrix::Identity();
   I_KH.leftCols<3>() -= K;
   covariance_ = I_KH * covariance_ * I_KH.transpose() + K * R * K.transpose();
+  covariance_ = 0.5 * (covariance_ + covariance_.transpose()).eval();
+}
+
+Eigen::Matrix3d covarianceMinimum(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
+  const Eigen::LLT<Eigen::Matrix3d> llt(A);
+  if (llt.info() != Eigen::Success) return Eigen::Matrix3d::Zero();
+  const Eigen::Matrix3d L = llt.matrixL();
+  const Eigen::Matrix3d L_inv = L.inverse();
+  const Eigen::Matrix3d M = L_inv * B * L_inv.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(0.5 * (M + M.transpose()));
+  return L * eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseMin(1.0).asDiagonal() *
+         eigen.eigenvectors().transpose() * L.transpose();
+}
+
+void PoseEkf::update(const geometry::Pose2& fix, const Eigen::Matrix3d& R,
+                     const Eigen::Matrix3d& map_part) {
+  const Eigen::Matrix3d before = covariance();
+  update(fix, R);
+  if (!map_part.allFinite() || map_part.isZero(0.0)) return;
+  floorPoseCovariance(covarianceMinimum(before, map_part));
+}
+
+void PoseEkf::floorPoseCovariance(const Eigen::Matrix3d& floor) {
+  if (!floor.allFinite() || floor.isZero(0.0)) return;
+  // With P = L L^T: P' = L V max(Lambda, 1) V^T L^T, where V Lambda V^T = L^-1 floor L^-T.
+  // Then P' >= P and P' >= floor; adding P' - P (>= 0) to the pose block keeps the whole
+  // state covariance positive semi-definite.
+  const Eigen::Matrix3d P = covariance();
+  const Eigen::LLT<Eigen::Matrix3d> llt(P);
+  if (llt.info() != Eigen::Success) return;
+  const Eigen::Matrix3d L = llt.matrixL();
+  const Eigen::Matrix3d L_inv = L.inverse();
+  const Eigen::Matrix3d M = L_inv * floor * L_inv.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(0.5 * (M + M.transpose()));
+  if (eigen.eigenvalues().maxCoeff() <= 1.0) return;
+  const Eigen::Matrix3d raised = L * eigen.eigenvectors() *
+                                 eigen.eigenvalues().cwiseMax(1.0).asDiagonal() *
+                                 eigen.eigenvectors().transpose() * L.transpose();
+  covariance_.topLeftCorner<3, 3>() += raised - P;
   covariance_ = 0.5 * (covariance_ + covariance_.transpose()).eval();
 }
 

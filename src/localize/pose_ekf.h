@@ -32,6 +32,11 @@ struct EkfOptions {
   double no_odometry_yaw_sigma = 0.1;       // rad / sqrt(s)
 };
 
+// The largest covariance below both A and B in the positive semi-definite order along the
+// generalised eigenvectors of (B, A): with A = L L^T and L^-1 B L^-T = V Lambda V^T,
+// L V min(Lambda, 1) V^T L^T. A must be positive definite; B positive semi-definite.
+Eigen::Matrix3d covarianceMinimum(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B);
+
 class PoseEkf {
  public:
   // State: x, y, yaw, yaw-rate bias, speed scale.
@@ -59,6 +64,18 @@ class PoseEkf {
   double mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& R) const;
   // Standard EKF update with a direct pose measurement (H = [I 0], yaw innovation wrapped).
   void update(const geometry::Pose2& fix, const Eigen::Matrix3d& R);
+  // Raises the pose covariance to at least `floor` (in the positive semi-definite order; the
+  // smallest such increase along the directions where it is below), leaving it where it is
+  // above. Errors that fusion cannot average out (the map's, shared by consecutive fixes of
+  // the same landmarks) bound what the filter may claim to know.
+  void floorPoseCovariance(const Eigen::Matrix3d& floor);
+  // An update with a fix whose covariance R holds a part `map_part` that the next fixes of
+  // the same landmarks repeat: fused as usual, but the pose covariance is not taken below
+  // the smaller of what it was and map_part (covarianceMinimum). Where the filter already
+  // knew better than those landmarks' map error it keeps what it had; where it knew worse
+  // it comes down to their map error and no further, however many frames see them.
+  void update(const geometry::Pose2& fix, const Eigen::Matrix3d& R,
+              const Eigen::Matrix3d& map_part);
 
   const geometry::Pose2& pose() const { return pose_; }
   // Marginal covariance of (x, y, yaw).

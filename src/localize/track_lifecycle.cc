@@ -23,6 +23,7 @@ void TrackLifecycle::reset() {
   search_window_.clear();
   disagreeing_fixes_ = 0;
   disagreeing_with_consensus_ = false;
+  fused_.clear();
 }
 
 void TrackLifecycle::startAt(const geometry::Pose2& pose, PoseEkf& ekf) const {
@@ -35,14 +36,20 @@ void TrackLifecycle::startAt(const geometry::Pose2& pose, PoseEkf& ekf) const {
 void TrackLifecycle::apply(const FrameFixes& fixes, bool was_tracking, PoseEkf& ekf,
                            MotionPrediction& motion, FrameResult& result) {
   if (fixes.agreeing) {
+    const PoseFix& fix = *fixes.agreeing;
     if (was_tracking) {
-      ekf.update(fixes.agreeing->pose, fixes.agreeing->covariance);
+      double uses = 0.0;
+      for (const std::string& id : fix.landmarks) uses += std::min(fused_[id], options_.map_reuse_cap - 1);
+      const double n = 1.0 + (fix.landmarks.empty() ? 0.0 : uses / fix.landmarks.size());
+      ekf.update(fix.pose, fix.covariance + (n - 1.0) * fix.map_part, fix.floor);
     } else {
+      fused_.clear();
       // First fix, or re-localisation after the filter got lost.
       ekf.initialise(fixes.agreeing->pose, fixes.agreeing->covariance, result.timestamp);
       result.reinitialised = true;
       motion.forgetFixes();
     }
+    for (const std::string& id : fix.landmarks) ++fused_[id];
     motion.noteFix(result.timestamp, ekf);
     disagreeing_fixes_ = 0;
     disagreeing_with_consensus_ = false;
@@ -70,6 +77,7 @@ void TrackLifecycle::apply(const FrameFixes& fixes, bool was_tracking, PoseEkf& 
   const int needed = std::max(1, options_.reinit_after_rejected_fixes);
   if (disagreeing_fixes_ >= (disagreeing_with_consensus_ ? needed : 2 * needed)) {
     ekf.initialise(fix, fixes.disagreeing->covariance, result.timestamp);
+    fused_.clear();
     result.reinitialised = true;
     result.status = TrackingStatus::kOk;
     result.warnings.push_back(

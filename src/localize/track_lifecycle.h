@@ -11,7 +11,10 @@
 //  - Kidnapped: fixes that agree with each other but not with the filter (a vehicle moved
 //    without odometry, or a filter gone wrong) re-initialise it after a few frame sets.
 #include <Eigen/Core>
+#include <map>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "geometry/pose.h"
 #include "localize/frame_types.h"
@@ -45,6 +48,12 @@ struct TrackingOptions {
   // drive or a parking spot, to about a decimetre and a couple of degrees.
   double initial_position_sigma_m = 0.1;
   double initial_yaw_sigma_deg = 2.0;
+  // A landmark's map error is one error, however many frames see it: after its landmarks were
+  // fused n times on average, a fix's map part weighs as n times its variance, so that the
+  // filter takes each landmark's map information about once (the information split among the
+  // fixes that repeat it) instead of averaging one survey error as if it were noise. n counts
+  // fusions since the filter started, up to this. 1: every fix as independent.
+  int map_reuse_cap = 20;
 };
 
 // The 1-sigma position uncertainty along the worst axis, metres.
@@ -56,6 +65,12 @@ bool isTracking(const PoseEkf& ekf, const TrackingOptions& options);
 struct PoseFix {
   geometry::Pose2 pose;
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  // The map's share of `covariance`, which the next frames' fixes of the same landmarks
+  // repeat, and the landmarks it comes from (the solve's inliers).
+  Eigen::Matrix3d map_part = Eigen::Matrix3d::Zero();
+  std::vector<std::string> landmarks;
+  // Fusing the fix does not take the filter below this (PoseEkf::update).
+  Eigen::Matrix3d floor = Eigen::Matrix3d::Zero();
 };
 
 // What parkloc's measurement made of one frame set.
@@ -89,6 +104,8 @@ class TrackLifecycle {
  private:
   TrackingOptions options_;
   SearchWindow search_window_;
+  // Fusions of each landmark since the filter started (map_reuse_cap).
+  std::map<std::string, int> fused_;
   // Re-localisation: consecutive fixes that disagree with the filter.
   int disagreeing_fixes_ = 0;
   bool disagreeing_with_consensus_ = false;  // one of them had two or more landmarks

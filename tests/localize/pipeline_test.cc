@@ -125,7 +125,11 @@ TEST_F(PipelineTest, AFixWhoseCornersFitWorseThanThePixelNoiseCountsForLess) {
     spot.pixel_noise = pixel_noise;
     std::mt19937 fixed(5);
     std::swap(rng, fixed);
-    Pipeline pipeline(rig, map, PipelineOptions{});
+    // The synthetic map is exact and says so: the fix's covariance is its pixel part alone.
+    PipelineOptions options;
+    options.solver.assumed_map_position_sigma_m = options.solver.assumed_map_heading_sigma_deg = 0;
+    options.solver.map_size_sigma = 0.0;
+    Pipeline pipeline(rig, map, options);
     const FrameResult r = pipeline.process(frame(drive, 0));
     EXPECT_TRUE(r.measurement_covariance.has_value());
     return r.measurement_covariance.value_or(Eigen::Matrix3d::Zero());

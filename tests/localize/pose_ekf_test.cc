@@ -264,5 +264,48 @@ TEST(PoseEkf, OdometryErrorJacobiansMatchCentralDifferences) {
   EXPECT_NEAR(analytic(2, 1), 0.0, 1e-12);
 }
 
+
+double smallestEigenvalue(const Eigen::Matrix3d& m) {
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(0.5 * (m + m.transpose()))
+      .eigenvalues()
+      .minCoeff();
+}
+
+TEST(PoseEkf, CovarianceMinimumLiesBelowBoth) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> n(0.0, 1.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    Eigen::Matrix3d a, b;
+    for (auto* m : {&a, &b})
+      for (int i = 0; i < 9; ++i) (*m)(i / 3, i % 3) = n(rng);
+    const Eigen::Matrix3d A = a * a.transpose() + 1e-3 * Eigen::Matrix3d::Identity();
+    const Eigen::Matrix3d B = b * b.transpose();
+    const Eigen::Matrix3d m = covarianceMinimum(A, B);
+    const double scale = A.norm() + B.norm();
+    EXPECT_GT(smallestEigenvalue(A - m), -1e-9 * scale);
+    EXPECT_GT(smallestEigenvalue(B - m), -1e-9 * scale);
+    EXPECT_GT(smallestEigenvalue(m), -1e-9 * scale);
+  }
+  const Eigen::Matrix3d A = Eigen::Vector3d(1.0, 2.0, 3.0).asDiagonal();
+  EXPECT_LT((covarianceMinimum(A, 2.0 * A) - A).norm(), 1e-12);        // B above A: A
+  EXPECT_LT((covarianceMinimum(A, 0.5 * A) - 0.5 * A).norm(), 1e-12);  // B below A: B
+}
+
+TEST(PoseEkf, RepeatingAFixDoesNotShrinkBelowItsMapPart) {
+  // The same landmarks' fix, frame after frame: its pixel part is new each time, its map part
+  // (here 5 cm, 0.5 degrees) is not.
+  PoseEkf ekf;
+  ekf.initialise(geometry::Pose2(0, 0, 0), Eigen::Vector3d(0.04, 0.04, 0.01).asDiagonal(), 0.0);
+  const Eigen::Matrix3d map_part = Eigen::Vector3d(0.05 * 0.05, 0.05 * 0.05, 7.6e-5).asDiagonal();
+  const Eigen::Matrix3d pixel_part = Eigen::Vector3d(1e-4, 1e-4, 1e-6).asDiagonal();
+  for (int i = 0; i < 200; ++i) ekf.update(geometry::Pose2(0, 0, 0), pixel_part + map_part, map_part);
+  EXPECT_GT(smallestEigenvalue(ekf.covariance() - map_part), -1e-12);
+  // Without the map part stated, 200 fusions average it away.
+  PoseEkf naive;
+  naive.initialise(geometry::Pose2(0, 0, 0), Eigen::Vector3d(0.04, 0.04, 0.01).asDiagonal(), 0.0);
+  for (int i = 0; i < 200; ++i) naive.update(geometry::Pose2(0, 0, 0), pixel_part + map_part);
+  EXPECT_LT(naive.covariance()(0, 0), 0.1 * map_part(0, 0));
+}
+
 }  // namespace
 }  // namespace parkloc::localize

@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "map/map_noise.h"
 #include "synthetic_scene.h"
 
 namespace parkloc::localize {
@@ -73,6 +74,9 @@ TEST(PoseSolver, PixelNoiseGivesAnUnbiasedPoseWithMatchingCovariance) {
   Eigen::Matrix3d predicted = Eigen::Matrix3d::Zero();
   SolverOptions options;
   options.pixel_sigma = spot.pixel_noise;
+  // The map is exact, and says so.
+  options.assumed_map_position_sigma_m = options.assumed_map_heading_sigma_deg = 0.0;
+  options.map_size_sigma = 0.0;
   for (int t = 0; t < trials; ++t) {
     const auto obs = observeExactly(rig, map, truth, spot, &rng);
     const auto result = solvePose(rig, obs, std::nullopt, options);
@@ -131,6 +135,96 @@ TEST(PoseSolver, ReportsNonConvergenceWithTooFewIterations) {
   EXPECT_FALSE(result.converged);
   EXPECT_FALSE(result.ok);
   EXPECT_NE(result.failure.find("converge"), std::string::npos);
+}
+
+
+TEST(PoseSolver, CornerJacobianMatchesCentralDifferences) {
+  const auto rig = geometry::defaultRig();
+  const geometry::Pose2 pose(1.0, -0.5, 0.4);
+  const Eigen::Vector3d corner(4.5, 0.8, 0.3);  // ahead of the front camera
+  const auto at = projectMapCorner(rig.cameras[0], pose, corner);
+  ASSERT_TRUE(at);
+  const double h = 1e-6;
+  for (int k = 0; k < 3; ++k) {
+    const auto plus = projectMapCorner(rig.cameras[0], pose, corner + h * Eigen::Vector3d::Unit(k));
+    const auto minus = projectMapCorner(rig.cameras[0], pose, corner - h * Eigen::Vector3d::Unit(k));
+    ASSERT_TRUE(plus && minus);
+    const Eigen::Vector2d numeric = (plus->pixel - minus->pixel) / (2 * h);
+    EXPECT_LT((numeric - at->J_pixel_corner.col(k)).norm(), 1e-4 * (1.0 + numeric.norm())) << k;
+  }
+}
+
+// Observations of the exact scene (1 px noise) whose map corners come from a map with survey
+// error `sigma` (map/map_noise.h), as a real map gives them; with `state_accuracy` false the
+// observations claim an exact map.
+std::vector<LandmarkObservation> observeWithMapError(const geometry::Rig& rig,
+                                                     const map::HdMap& exact,
+                                                     const map::HdMap& noisy,
+                                                     const geometry::Pose2& truth,
+                                                     bool state_accuracy, std::mt19937& rng) {
+  testing::SpotOptions spot;
+  spot.pixel_noise = 1.0;
+  auto obs = observeExactly(rig, exact, truth, spot, &rng);
+  const FloorHeights floors(noisy);
+  for (auto& o : obs) {
+    const map::Landmark& l = *noisy.findById(o.landmark_id);
+    o.map_corners = floors.cornersAboveFloor(l);
+    if (state_accuracy) o.accuracy = l.accuracy;
+  }
+  return obs;
+}
+
+TEST(PoseSolver, MapErrorIsMarginalisedIntoAnHonestCovariance) {
+  const auto rig = geometry::defaultRig();
+  const auto exact = aisleMap();
+  const geometry::Pose2 truth(12.0, 0.2, 0.15);
+  std::mt19937 rng(5);
+  const int trials = 60;
+  double nees_stated = 0.0, nees_ignored = 0.0, error_stated = 0.0, error_ignored = 0.0;
+  for (int t = 0; t < trials; ++t) {
+    const map::HdMap noisy = map::perturbedMap(exact, {0.10, static_cast<uint64_t>(t)});
+    SolverOptions stated;
+    stated.pixel_sigma = 1.0;
+    SolverOptions ignored = stated;  // an exact map assumed: pixel noise only
+    ignored.assumed_map_position_sigma_m = ignored.assumed_map_heading_sigma_deg = 0.0;
+    ignored.map_size_sigma = 0.0;
+    ignored.max_iterations = 50;
+    const auto with = solvePose(rig, observeWithMapError(rig, exact, noisy, truth, true, rng),
+                                std::nullopt, stated);
+    const auto without = solvePose(rig, observeWithMapError(rig, exact, noisy, truth, false, rng),
+                                   std::nullopt, ignored);
+    ASSERT_TRUE(with.ok && without.ok) << with.failure << without.failure;
+    for (const auto* r : {&with, &without}) {
+      const Eigen::Vector3d e(r->pose.x - truth.x, r->pose.y - truth.y,
+                              geometry::wrapAngle(r->pose.yaw - truth.yaw));
+      const double nees = e.dot(r->covariance.inverse() * e);
+      (r == &with ? nees_stated : nees_ignored) += nees / trials;
+      (r == &with ? error_stated : error_ignored) += e.head<2>().norm() / trials;
+    }
+    // The map's share is part of the covariance and most of it at 10 cm.
+    EXPECT_GT(with.map_covariance.trace(), 0.5 * with.covariance.trace());
+    EXPECT_LT((with.covariance - with.map_covariance).trace(), with.covariance.trace());
+  }
+  // Consistent: the NEES of 3 dof averages 3; claiming an exact map is far off.
+  EXPECT_GT(nees_stated, 1.5);
+  EXPECT_LT(nees_stated, 5.0);
+  EXPECT_GT(nees_ignored, 30.0);
+  // Weighting by the map's error is no worse than treating corners as independent.
+  EXPECT_LT(error_stated, 1.05 * error_ignored);
+}
+
+TEST(PoseSolver, ExactMapStatedHasNoMapCovariance) {
+  const auto rig = geometry::defaultRig();
+  const auto map = aisleMap();
+  const geometry::Pose2 truth(20.0, -0.8, -0.25);
+  auto obs = observeExactly(rig, map, truth);
+  for (auto& o : obs) o.accuracy = {0.0, 0.0};
+  SolverOptions options;
+  options.map_size_sigma = 0.0;
+  const auto result = solvePose(rig, obs, std::nullopt, options);
+  ASSERT_TRUE(result.ok) << result.failure;
+  EXPECT_LT((result.pose.translation() - truth.translation()).norm(), 1e-3);
+  EXPECT_LT(result.map_covariance.norm(), 1e-12 * result.covariance.norm() + 1e-18);
 }
 
 }  // namespace

@@ -9,15 +9,22 @@ namespace {
 
 const Eigen::Matrix3d kFixCovariance = Eigen::Vector3d(1e-4, 1e-4, 1e-4).asDiagonal();
 
+PoseFix fixAt(const geometry::Pose2& pose) {
+  PoseFix fix;
+  fix.pose = pose;
+  fix.covariance = kFixCovariance;
+  return fix;
+}
+
 FrameFixes agreeing(const geometry::Pose2& pose) {
   FrameFixes f;
-  f.agreeing = PoseFix{pose, kFixCovariance};
+  f.agreeing = fixAt(pose);
   return f;
 }
 
 FrameFixes disagreeing(const geometry::Pose2& pose, int landmarks) {
   FrameFixes f;
-  f.disagreeing = PoseFix{pose, kFixCovariance};
+  f.disagreeing = fixAt(pose);
   f.disagreeing_landmarks = landmarks;
   return f;
 }

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "eval/conditions.h"
+#include "eval/consistency.h"
 #include "eval/dataset.h"
 #include "eval/dead_reckoning.h"
 #include "eval/evaluation_variants.h"
@@ -18,7 +19,6 @@
 #include "eval/number_recall.h"
 #include "eval/pose_prediction.h"
 #include "eval/tables.h"
-#include "eval/consistency.h"
 #include "io/sequence.h"
 #include "map/map_noise.h"
 #include "run/oracle_source.h"
@@ -150,6 +150,9 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     if (frames == 0) continue;
     const double t0 = seq.timestamps().front(), t1 = seq.timestamps()[frames - 1];
 
+    // The level the drive starts on: the hint of --give-level, and the truth where the drive
+    // has no levels.csv.
+    const std::string start_level = sequenceLevel(seq.metaJson());
     std::vector<VariantRun> runs;
     for (VariantTally& tally : tallies) {
       VariantRun run;
@@ -160,14 +163,13 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         run.dead_reckoning = std::make_unique<DeadReckoning>(*start, t0);
       } else {
         localize::PipelineOptions pipeline_options = tally.spec.options;
-        if (options.give_level) pipeline_options.level = sequenceLevel(seq.metaJson());
+        if (options.give_level) pipeline_options.level = start_level;
         run.pipeline = std::make_unique<localize::Pipeline>(
             seq.rig(),
             tally.spec.map_noise_m > 0.0
                 ? map::perturbedMap(seq.map(), {tally.spec.map_noise_m, options.map_noise_seed})
                 : seq.map(),
-            pipeline_options,
-            tally.spec.source == Source::kSpotter ? spotter : nullptr);
+            pipeline_options, tally.spec.source == Source::kSpotter ? spotter : nullptr);
       }
       runs.push_back(std::move(run));
     }
@@ -180,7 +182,6 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
     double previous_time = -std::numeric_limits<double>::infinity();
     const std::string stage = fmt::format("sequence {}/{} {}", s + 1, sequences.size(), name);
     std::vector<std::set<std::string>> tags_by_frame;
-    const std::string start_level = sequenceLevel(seq.metaJson());
     for (size_t i = 0; i < frames; ++i) {
       const double t = seq.timestamps()[i];
       const std::vector<OdometrySample> odometry =
@@ -337,9 +338,9 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         run.tally->frame_tags.push_back(tags_by_frame[index]);
       }
       // The main configuration's first drives, and those of each map-noise level.
-      const bool main_or_noisy = run.tally->spec.key == main_key ||
-                                 (run.tally->spec.map_noise_m > 0.0 &&
-                                  run.tally->spec.key.rfind(main_key, 0) == 0);
+      const bool main_or_noisy =
+          run.tally->spec.key == main_key ||
+          (run.tally->spec.map_noise_m > 0.0 && run.tally->spec.key.rfind(main_key, 0) == 0);
       if (main_or_noisy && run.tally->views < options.trajectory_views) {
         views.push_back(makeView(seq, run, t0, t1));
         ++run.tally->views;

@@ -22,23 +22,28 @@ double LevelScore::rightWhereDecided() const {
   return decided == 0 ? 1.0 : static_cast<double>(decided_right) / static_cast<double>(decided);
 }
 
+namespace {
+
+// tellsLevel with the map's levels at hand.
+bool tellsLevelOf(const map::HdMap& map, const std::vector<std::string>& levels,
+                  const std::string& text) {
+  if (levels.size() < 2) return false;
+  if (localize::levelNamedBy(levels, text)) return true;
+  const size_t with_text = map::levelsWithText(map, text).size();
+  return with_text > 0 && with_text < levels.size();
+}
+
+}  // namespace
+
 bool tellsLevel(const map::HdMap& map, const std::string& text) {
-  std::set<std::string> all, with_text;
-  for (const map::Landmark& l : map.landmarks()) {
-    all.insert(l.level);
-    if (l.text == text) with_text.insert(l.level);
-  }
-  if (all.size() < 2) return false;
-  const std::string name = localize::levelNameKey(text);
-  for (const std::string& level : all)
-    if (localize::levelNameKey(level) == name) return true;
-  return !with_text.empty() && with_text.size() < all.size();
+  return tellsLevelOf(map, map::distinctLevels(map), text);
 }
 
 bool tellingTextInView(const map::HdMap& map, const std::vector<io::ImageLabels>& labels) {
+  const std::vector<std::string> levels = map::distinctLevels(map);
   for (const io::ImageLabels& image : labels)
     for (const io::LabelInstance& l : image.instances)
-      if (l.legible && l.occluded_fraction < 0.5 && tellsLevel(map, l.text)) return true;
+      if (l.legible && l.occluded_fraction < 0.5 && tellsLevelOf(map, levels, l.text)) return true;
   return false;
 }
 

@@ -11,12 +11,21 @@
 #include "localize/shared_places.h"
 
 namespace parkloc::localize {
+
 std::string levelNameKey(const std::string& text) {
   std::string out;
   for (const char c : text)
     if (!std::isspace(static_cast<unsigned char>(c)))
       out.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
   return out;
+}
+
+std::optional<std::string> levelNamedBy(const std::vector<std::string>& levels,
+                                        const std::string& text) {
+  const std::string key = levelNameKey(text);
+  for (const std::string& level : levels)
+    if (levelNameKey(level) == key) return level;
+  return std::nullopt;
 }
 
 bool looksLikeLevelSign(const std::string& text) {
@@ -27,11 +36,9 @@ bool looksLikeLevelSign(const std::string& text) {
 
 LevelEstimate::LevelEstimate(const map::HdMap& map, const LevelOptions& options, std::string hint)
     : map_(map), options_(options), hint_(std::move(hint)) {
-  std::set<std::string> levels;
-  for (const map::Landmark& l : map.landmarks()) levels.insert(l.level);
-  levels_.assign(levels.begin(), levels.end());
+  levels_ = map::distinctLevels(map);
   if (levels_.empty()) levels_.push_back("");
-  if (!hint_.empty() && !levels.count(hint_)) {
+  if (!hint_.empty() && std::find(levels_.begin(), levels_.end(), hint_) == levels_.end()) {
     std::string known;
     for (const auto& l : levels_) known += (known.empty() ? "" : ", ") + l;
     throw InputError(
@@ -90,10 +97,7 @@ void LevelEstimate::update(const std::vector<CameraResult>& cameras,
           instance.recognition_score < options_.min_recognition_score)
         continue;
       Evidence e;
-      const std::string name = levelNameKey(instance.text);
-      const auto named = std::find_if(levels_.begin(), levels_.end(),
-                                      [&](const std::string& l) { return levelNameKey(l) == name; });
-      if (named != levels_.end()) {
+      if (const auto named = levelNamedBy(levels_, instance.text)) {
         e.levels = {*named};
         e.ratio = options_.sign_ratio;
       } else if (a && a->verdict == AssociationVerdict::kAccepted && !a->landmark_id.empty()) {
@@ -101,12 +105,13 @@ void LevelEstimate::update(const std::vector<CameraResult>& cameras,
           e.levels = levelsWithTextAt(map_, instance.text, *l, options_.shared_place_m);
         e.ratio = options_.place_ratio;
       } else {
-        for (const map::Landmark* l : map_.findByText(instance.text)) e.levels.insert(l->level);
+        e.levels = map::levelsWithText(map_, instance.text);
         e.ratio = options_.text_ratio;
         if (e.levels.empty() && instance.cls != map::TextClass::kParkingNumber &&
-            looksLikeLevelSign(instance.text) && unknown_signs_.insert(name).second)
-          warnings.push_back(fmt::format(
-              "level sign \"{}\" names no level of the map: ignored", instance.text));
+            looksLikeLevelSign(instance.text) &&
+            unknown_signs_.insert(levelNameKey(instance.text)).second)
+          warnings.push_back(
+              fmt::format("level sign \"{}\" names no level of the map: ignored", instance.text));
       }
       if (e.levels.empty() || e.levels.size() >= n) continue;
       Evidence& kept = by_text[instance.text];

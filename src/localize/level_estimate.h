@@ -16,13 +16,13 @@
 // the level holds; once no text has been associated for LevelOptions::ramp_after_s, the
 // probabilities mix at a rate of level change, so that the readings after the stretch decide
 // the level afresh and the estimate follows a drive to another level. A level is decided once
-// its probability reaches
-// LevelOptions::decided_probability; until then association and reading take every level
-// (shared_places.h: a place the levels share still fixes x, y and yaw).
+// its probability reaches LevelOptions::decided_probability; until then association and reading
+// take every level (shared_places.h: a place the levels share still fixes x, y and yaw).
 //
 // Only texts that were read count: a corner fit at a predicted place (TextInstance::read
 // false), a part of a text and a second opinion do not. A hint (PipelineOptions::level: the
 // car entered on B1) starts the estimate decided on that level; the evidence may still move it.
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -104,6 +104,10 @@ class LevelEstimate {
 
 // A text as it is compared with the map's level names: upper case, no blanks ("b 2": "B2").
 std::string levelNameKey(const std::string& text);
+
+// The level of `levels` that `text` names ("b 2" names "B2"), if any: a level sign.
+std::optional<std::string> levelNamedBy(const std::vector<std::string>& levels,
+                                        const std::string& text);
 
 // Whether `text` looks like a level sign ("B2", "P1", "L3", "-1"), whether or not the map has
 // that level.

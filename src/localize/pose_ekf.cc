@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <cmath>
+#include <optional>
 
 namespace parkloc::localize {
 namespace {
@@ -108,15 +109,36 @@ void PoseEkf::update(const geometry::Pose2& fix, const Eigen::Matrix3d& R) {
   covariance_ = 0.5 * (covariance_ + covariance_.transpose()).eval();
 }
 
-Eigen::Matrix3d covarianceMinimum(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
+namespace {
+
+// The generalised eigen decomposition of (B, A): with A = L L^T, L^-1 B L^-T = V diag(lambda)
+// V^T. Empty when A is not positive definite.
+struct GeneralisedEigen {
+  Eigen::Matrix3d L, V;
+  Eigen::Vector3d lambda;
+};
+std::optional<GeneralisedEigen> generalisedEigen(const Eigen::Matrix3d& A,
+                                                 const Eigen::Matrix3d& B) {
   const Eigen::LLT<Eigen::Matrix3d> llt(A);
-  if (llt.info() != Eigen::Success) return Eigen::Matrix3d::Zero();
+  if (llt.info() != Eigen::Success) return std::nullopt;
   const Eigen::Matrix3d L = llt.matrixL();
   const Eigen::Matrix3d L_inv = L.inverse();
   const Eigen::Matrix3d M = L_inv * B * L_inv.transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(0.5 * (M + M.transpose()));
-  return L * eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseMin(1.0).asDiagonal() *
-         eigen.eigenvectors().transpose() * L.transpose();
+  return GeneralisedEigen{L, eigen.eigenvectors(), eigen.eigenvalues()};
+}
+
+// L V diag(lambda) V^T L^T: A with its generalised eigenvalues replaced by `lambda`.
+Eigen::Matrix3d recompose(const GeneralisedEigen& g, const Eigen::Vector3d& lambda) {
+  return g.L * g.V * lambda.asDiagonal() * g.V.transpose() * g.L.transpose();
+}
+
+}  // namespace
+
+Eigen::Matrix3d covarianceMinimum(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
+  const auto g = generalisedEigen(A, B);
+  if (!g) return Eigen::Matrix3d::Zero();
+  return recompose(*g, g->lambda.cwiseMax(0.0).cwiseMin(1.0));
 }
 
 void PoseEkf::update(const geometry::Pose2& fix, const Eigen::Matrix3d& R,
@@ -133,16 +155,9 @@ void PoseEkf::floorPoseCovariance(const Eigen::Matrix3d& floor) {
   // Then P' >= P and P' >= floor; adding P' - P (>= 0) to the pose block keeps the whole
   // state covariance positive semi-definite.
   const Eigen::Matrix3d P = covariance();
-  const Eigen::LLT<Eigen::Matrix3d> llt(P);
-  if (llt.info() != Eigen::Success) return;
-  const Eigen::Matrix3d L = llt.matrixL();
-  const Eigen::Matrix3d L_inv = L.inverse();
-  const Eigen::Matrix3d M = L_inv * floor * L_inv.transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(0.5 * (M + M.transpose()));
-  if (eigen.eigenvalues().maxCoeff() <= 1.0) return;
-  const Eigen::Matrix3d raised = L * eigen.eigenvectors() *
-                                 eigen.eigenvalues().cwiseMax(1.0).asDiagonal() *
-                                 eigen.eigenvectors().transpose() * L.transpose();
+  const auto g = generalisedEigen(P, floor);
+  if (!g || g->lambda.maxCoeff() <= 1.0) return;
+  const Eigen::Matrix3d raised = recompose(*g, g->lambda.cwiseMax(1.0));
   covariance_.topLeftCorner<3, 3>() += raised - P;
   covariance_ = 0.5 * (covariance_ + covariance_.transpose()).eval();
 }

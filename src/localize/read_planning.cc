@@ -7,8 +7,7 @@
 namespace parkloc::localize {
 
 ReadPlanner::ReadPlanner(const geometry::Rig& rig, const map::HdMap& map,
-                         const FloorHeights& floors, const ReadingOptions& options,
-                         bool guided)
+                         const FloorHeights& floors, const ReadingOptions& options, bool guided)
     : rig_(rig),
       map_(map),
       floors_(floors),
@@ -42,14 +41,14 @@ ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimat
 
   // Regions of every guided camera, then the budget over all of them. While the level is
   // undecided, a place the levels share is one region, asked for the text of any level.
-  const auto within = map_.withinRadius(ekf.pose().translation(), options_.roi_radius_m, plan.level);
-  std::vector<SharedPlace> places;
-  if (level.belief().decided)
-    for (const map::Landmark* l : within) places.push_back({l, {l->text}});
-  else
-    places = sharedPlaces(within, level.belief().level, level.options().shared_place_m);
-  std::vector<const map::Landmark*> nearby;
-  for (const SharedPlace& p : places) nearby.push_back(p.landmark);
+  std::vector<const map::Landmark*> nearby =
+      map_.withinRadius(ekf.pose().translation(), options_.roi_radius_m, plan.level);
+  std::vector<SharedPlace> places;  // while undecided
+  if (!level.belief().decided) {
+    places = sharedPlaces(nearby, level.belief().level, level.options().shared_place_m);
+    nearby.clear();
+    for (const SharedPlace& p : places) nearby.push_back(p.landmark);
+  }
   auto& candidates = plan.regions;
   for (size_t c = 0; c < n_cameras; ++c) {
     if (plan.choice.full_frame[c]) continue;

@@ -117,4 +117,16 @@ std::vector<std::string> distinctTexts(const HdMap& map, bool floor_only) {
   return {texts.begin(), texts.end()};
 }
 
+std::vector<std::string> distinctLevels(const HdMap& map) {
+  std::set<std::string> levels;
+  for (const Landmark& landmark : map.landmarks()) levels.insert(landmark.level);
+  return {levels.begin(), levels.end()};
+}
+
+std::set<std::string> levelsWithText(const HdMap& map, const std::string& text) {
+  std::set<std::string> levels;
+  for (const Landmark* landmark : map.findByText(text)) levels.insert(landmark->level);
+  return levels;
+}
+
 }  // namespace parkloc::map

@@ -2,6 +2,7 @@
 // The HD map: text landmarks with lookup by exact text and a spatial index for radius
 // queries. Pure in-memory data; reading and writing GeoJSON lives in io/.
 #include <Eigen/Core>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -16,8 +17,7 @@ class HdMap {
   // Checks the landmarks (see validate) and builds the indexes; throws InputError.
   // `accuracy` is the map-wide default the file states (its landmarks carry it already where
   // they state none of their own).
-  explicit HdMap(std::vector<Landmark> landmarks, std::string name = "",
-                 MapAccuracy accuracy = {});
+  explicit HdMap(std::vector<Landmark> landmarks, std::string name = "", MapAccuracy accuracy = {});
 
   const std::string& name() const { return name_; }
   const MapAccuracy& accuracy() const { return accuracy_; }
@@ -53,5 +53,10 @@ class HdMap {
 // Every distinct text of the map's landmarks, sorted; with `floor_only`, only those painted
 // on the floor. Text spotting decodes against these (its lexicons).
 std::vector<std::string> distinctTexts(const HdMap& map, bool floor_only = false);
+
+// Every distinct level of the map's landmarks, sorted.
+std::vector<std::string> distinctLevels(const HdMap& map);
+// The levels on which the map has `text` (empty: on none).
+std::set<std::string> levelsWithText(const HdMap& map, const std::string& text);
 
 }  // namespace parkloc::map

@@ -93,6 +93,15 @@ TEST(HdMapTest, DistinctTextsAreSortedOnceEachAndFloorOnlyLeavesPillarsOut) {
             (std::vector<std::string>{"B1-101", "B1-102"}));
 }
 
+TEST(HdMapTest, LevelsAreSortedOnceEachAndTextsKnowTheirLevels) {
+  const HdMap map({number("a", "117", "B2", 0, 0), number("b", "117", "B1", 0, 0),
+                   number("c", "201", "B2", 5, 0), number("d", "301", "B3", 9, 0)});
+  EXPECT_EQ(distinctLevels(map), (std::vector<std::string>{"B1", "B2", "B3"}));
+  EXPECT_EQ(levelsWithText(map, "117"), (std::set<std::string>{"B1", "B2"}));
+  EXPECT_EQ(levelsWithText(map, "201"), (std::set<std::string>{"B2"}));
+  EXPECT_TRUE(levelsWithText(map, "999").empty());
+}
+
 TEST(HdMapTest, ValidateRejectsDuplicateId) {
   EXPECT_EQ(HdMap::validate({number("a", "1", "B1", 0, 0), number("a", "2", "B1", 1, 0)}),
             "duplicate id 'a'");

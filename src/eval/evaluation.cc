@@ -116,7 +116,9 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
                                    ocr::TextSpotter* spotter, const EvaluationOptions& options) {
   std::vector<VariantTally> tallies;
   for (const VariantSpec& spec : variantSpecs(options, spotter != nullptr)) {
-    tallies.push_back({spec, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0});
+    VariantTally tally;
+    tally.spec = spec;
+    tallies.push_back(std::move(tally));
   }
   const bool shared_ocr = std::any_of(tallies.begin(), tallies.end(), [](const VariantTally& t) {
     return t.spec.source == Source::kSharedFullFrame;

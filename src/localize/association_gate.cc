@@ -24,12 +24,10 @@ std::optional<GateResult> gateObservation(const geometry::RigCamera& camera,
   Eigen::Vector2d observed_centre = Eigen::Vector2d::Zero();
   for (const auto& p : observation.pixels) observed_centre += 0.25 * p;
 
-  Eigen::Matrix3d P = covariance;
+  Eigen::Matrix3d P = withMapPositionError(covariance, observation.accuracy);
   const double floor_sigma = options.min_radius_m / 3.0;
-  // The landmark's stated map error moves its projected centre as the vehicle's position does.
-  const double map_sigma = observation.accuracy.position_sigma.value_or(0.0);
-  P(0, 0) += floor_sigma * floor_sigma + map_sigma * map_sigma;
-  P(1, 1) += floor_sigma * floor_sigma + map_sigma * map_sigma;
+  P(0, 0) += floor_sigma * floor_sigma;
+  P(1, 1) += floor_sigma * floor_sigma;
   const Eigen::Matrix2d S = J * P * J.transpose() + options.centre_sigma_px *
                                                         options.centre_sigma_px *
                                                         Eigen::Matrix2d::Identity();

@@ -279,6 +279,15 @@ geometry::Pose2 applyStep(const geometry::Pose2& pose, const Eigen::Vector3d& st
 
 }  // namespace
 
+Eigen::Matrix3d withMapPositionError(const Eigen::Matrix3d& pose_covariance,
+                                     const map::MapAccuracy& accuracy) {
+  const double sigma = accuracy.position_sigma.value_or(0.0);
+  Eigen::Matrix3d P = pose_covariance;
+  P(0, 0) += sigma * sigma;
+  P(1, 1) += sigma * sigma;
+  return P;
+}
+
 std::optional<CornerProjection> projectMapCorner(const geometry::RigCamera& camera,
                                                  const geometry::Pose2& map_from_vehicle,
                                                  const Eigen::Vector3d& map_corner) {

@@ -82,6 +82,12 @@ std::optional<CornerProjection> projectMapCorner(const geometry::RigCamera& came
                                                  const geometry::Pose2& map_from_vehicle,
                                                  const Eigen::Vector3d& map_corner);
 
+// The pose covariance as a landmark's image sees it: the landmark's stated map position error
+// (map::MapAccuracy) moves its image as the vehicle's position does, so its variance adds to
+// the pose's x and y (its heading error is small beside the pose's yaw for a text's extent).
+Eigen::Matrix3d withMapPositionError(const Eigen::Matrix3d& pose_covariance,
+                                     const map::MapAccuracy& accuracy);
+
 // Closed-form pose from one observation: each corner's ray meets the horizontal plane at
 // the corner's height (the ground for painted text; for pillar text the map gives the
 // height), then a 2-D rigid alignment of the four points. Empty when a ray misses.

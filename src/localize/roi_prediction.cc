@@ -52,11 +52,7 @@ std::vector<RegionCandidate> predictRegionCandidates(
   std::vector<RegionCandidate> regions;
   for (const map::Landmark* landmark : nearby) {
     const auto corners = floors.cornersAboveFloor(*landmark);
-    // The landmark's stated map error moves its image as the vehicle's position does.
-    Eigen::Matrix3d pose_and_map = covariance;
-    const double map_sigma = landmark->accuracy.position_sigma.value_or(0.0);
-    pose_and_map(0, 0) += map_sigma * map_sigma;
-    pose_and_map(1, 1) += map_sigma * map_sigma;
+    const Eigen::Matrix3d pose_and_map = withMapPositionError(covariance, landmark->accuracy);
     std::array<Eigen::Vector2d, 4> quad;
     double grow_sigma = 0.0;
     bool ok = true;

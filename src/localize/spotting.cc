@@ -1,5 +1,7 @@
 #include "localize/spotting.h"
 
+#include <fmt/format.h>
+
 #include "common/error.h"
 #include "localize/stage_clock.h"
 
@@ -30,6 +32,13 @@ std::vector<bool> spotCameras(const FrameInput& frame, const geometry::Rig& rig,
     } else if (input->image.empty()) {
       camera_result.image_ok = false;
       result.warnings.push_back("camera '" + camera.name + "': image missing or corrupt, skipped");
+    } else if (input->image.cols != camera.model.width || input->image.rows != camera.model.height) {
+      // The floor view, the regions and every projection follow the calibration: an image of
+      // another size (another camera, a resized recording) would be read as garbage.
+      camera_result.image_ok = false;
+      result.warnings.push_back(fmt::format(
+          "camera '{}': image is {}x{} but its calibration is {}x{}: skipped", camera.name,
+          input->image.cols, input->image.rows, camera.model.width, camera.model.height));
     } else if (!spotter) {
       result.warnings.push_back("camera '" + camera.name + "': no spotter and no instances");
     } else {

@@ -1,5 +1,6 @@
 #include "localize/pipeline.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -8,6 +9,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <opencv2/imgproc.hpp>
 #include <thread>
 
 #include "localize/box_plot_filter.h"
@@ -75,6 +77,13 @@ class PipelineTest : public ::testing::Test {
       in.odometry.push_back(drive.odometry(in.timestamp - 0.1 + j * 0.02));
     if (edit) edit(in.cameras);
     return in;
+  }
+
+  // An image of camera c at its calibrated size, its first channel c (SceneSpotter tells
+  // the cameras apart by it).
+  cv::Mat cameraImage(size_t c) const {
+    const auto& model = rig.cameras[c].model;
+    return cv::Mat(model.height, model.width, CV_8UC3, cv::Scalar(static_cast<double>(c), 0, 0));
   }
 
   // 20 tracked frames, then one with a misreading of a number that is in the map, at its
@@ -522,7 +531,7 @@ TEST_F(PipelineTest, MapGuidedSpottingAsksForPredictedRegionsAndFullFramesNowAnd
     FrameInput in = frame(drive, k);
     for (size_t c = 0; c < in.cameras.size(); ++c) {
       in.cameras[c].instances.reset();
-      in.cameras[c].image = cv::Mat(4, 4, CV_8UC3, cv::Scalar(static_cast<double>(c), 0, 0));
+      in.cameras[c].image = cameraImage(c);
     }
     spotter.pose = drive.truth(in.timestamp);
     spotter.requests.clear();
@@ -554,7 +563,7 @@ TEST_F(PipelineTest, AsksForSecondOpinionsOnFullFramesOnlyWhenTold) {
     FrameInput in = frame(Drive{}, 0);
     for (size_t c = 0; c < in.cameras.size(); ++c) {
       in.cameras[c].instances.reset();
-      in.cameras[c].image = cv::Mat(4, 4, CV_8UC3, cv::Scalar(static_cast<double>(c), 0, 0));
+      in.cameras[c].image = cameraImage(c);
     }
     pipeline.process(in);
     ASSERT_FALSE(spotter.requests.empty());
@@ -589,13 +598,41 @@ TEST_F(PipelineTest, StageTimingsAddUpAndShowTheStagesThatRan) {
   FrameInput in = frame(drive, 0);
   for (size_t c = 0; c < in.cameras.size(); ++c) {
     in.cameras[c].instances.reset();
-    in.cameras[c].image = cv::Mat(4, 4, CV_8UC3, cv::Scalar(static_cast<double>(c), 0, 0));
+    in.cameras[c].image = cameraImage(c);
   }
   spotter.pose = drive.truth(in.timestamp);
   const auto r = spotted.process(in);
   ASSERT_FALSE(spotter.requests.empty());
   EXPECT_GE(r.timings.spotting_ms, 5.0 * static_cast<double>(spotter.requests.size()));
   EXPECT_GE(r.timings.total_ms, sumOfStages(r.timings));
+}
+
+TEST_F(PipelineTest, AnImageWhoseSizeIsNotItsCalibrationsIsSkippedWithAWarning) {
+  // A resized recording or another camera's image: that camera is skipped (the spotter never
+  // sees it), the others are read.
+  SceneSpotter spotter(rig, map);
+  Pipeline pipeline(rig, map, {}, &spotter);
+  Drive drive;
+  FrameInput in = frame(drive, 0);
+  for (size_t c = 0; c < in.cameras.size(); ++c) {
+    in.cameras[c].instances.reset();
+    in.cameras[c].image = cameraImage(c);
+  }
+  cv::resize(in.cameras[0].image, in.cameras[0].image, {}, 0.5, 0.5);
+  spotter.pose = drive.truth(in.timestamp);
+  const auto r = pipeline.process(in);
+  ASSERT_EQ(r.cameras.size(), rig.cameras.size());
+  EXPECT_FALSE(r.cameras[0].image_ok);
+  for (size_t c = 1; c < r.cameras.size(); ++c) EXPECT_TRUE(r.cameras[c].image_ok);
+  for (const auto& request : spotter.requests) EXPECT_NE(request.camera, &rig.cameras[0]);
+  std::string all;
+  for (const auto& w : r.warnings) all += w + "\n";
+  const auto& model = rig.cameras[0].model;
+  EXPECT_NE(all.find(fmt::format("'{}': image is {}x{} but its calibration is {}x{}",
+                                 rig.cameras[0].name, model.width / 2, model.height / 2,
+                                 model.width, model.height)),
+            std::string::npos)
+      << all;
 }
 
 }  // namespace

@@ -133,13 +133,15 @@ inline std::vector<LandmarkObservation> observeExactly(const geometry::Rig& rig,
   return out;
 }
 
-// A frame set at time t for a spotter that ignores the pixels: a small placeholder image per
-// rig camera and one odometry sample of the given speed (straight ahead).
+// A frame set at time t for a spotter that ignores the pixels: a blank image of each rig
+// camera's calibrated size (the pipeline skips any other) and one odometry sample of the
+// given speed (straight ahead).
 inline FrameInput placeholderFrame(const geometry::Rig& rig, double t, double speed) {
   FrameInput in;
   in.timestamp = t;
   for (const auto& camera : rig.cameras)
-    in.cameras.push_back({camera.name, cv::Mat(4, 4, CV_8UC3), {}});
+    in.cameras.push_back(
+        {camera.name, cv::Mat(camera.model.height, camera.model.width, CV_8UC3), {}});
   OdometrySample odo;
   odo.timestamp = t;
   odo.speed = speed;

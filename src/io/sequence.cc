@@ -13,7 +13,9 @@
 #include "common/error.h"
 #include "io/calibration_yaml.h"
 #include "io/image_file.h"
+#include "io/frame_sets.h"
 #include "io/map_geojson.h"
+#include "io/video_timestamps.h"
 
 namespace parkloc::io {
 namespace fs = std::filesystem;
@@ -33,6 +35,24 @@ bool isImageFile(const fs::path& p) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
   return ext == ".jpg" || ext == ".jpeg" || ext == ".png";
+}
+
+// videos/<camera>.<ext>, any extension but the timestamps' .csv; empty when there is none.
+std::optional<fs::path> videoOf(const fs::path& videos, const std::string& camera) {
+  if (!fs::is_directory(videos)) return std::nullopt;
+  std::vector<fs::path> found;
+  for (const auto& entry : fs::directory_iterator(videos))
+    if (entry.is_regular_file() && entry.path().stem() == camera &&
+        entry.path().extension() != ".csv")
+      found.push_back(entry.path());
+  if (found.empty()) return std::nullopt;
+  if (found.size() > 1) {
+    std::sort(found.begin(), found.end());
+    throw InputError(fmt::format("camera '{}' has {} videos in {} ({}, {}, ...): keep one",
+                                 camera, found.size(), videos.string(),
+                                 found[0].filename().string(), found[1].filename().string()));
+  }
+  return found.front();
 }
 
 std::string readText(const fs::path& p) {
@@ -75,12 +95,37 @@ Sequence::Sequence(const std::string& dir, const std::string& calib_path,
   if (const fs::path meta = root / "meta.json"; fs::is_regular_file(meta))
     meta_json_ = readText(meta);
 
-  // Gather (camera, stem) -> path; a frame set is all images sharing one stem.
+  // Per camera, its images: files named by their capture time, or a video with its times.
   const fs::path images = root / "images";
-  std::map<std::string, std::map<std::string, std::string>> stems_by_camera;
-  std::map<std::string, double> stem_time;
+  const fs::path videos = root / "videos";
+  std::map<std::string, std::vector<double>> times;         // camera -> capture times
+  std::map<std::string, std::vector<std::string>> paths;    // ... image files, in that order
+  std::map<std::string, std::vector<int>> frames_in_video;  // ... or video frames
   for (const auto& camera : rig_.cameras) {
     const fs::path folder = images / camera.name;
+    const std::optional<fs::path> video = videoOf(videos, camera.name);
+    if (video && fs::is_directory(folder))
+      throw InputError(fmt::format("sequence {}: camera '{}' has both {} and {}", dir,
+                                   camera.name, folder.string(), video->string()));
+    if (video) {
+      const fs::path csv = videos / (camera.name + ".csv");
+      if (!fs::is_regular_file(csv))
+        throw InputError(fmt::format("sequence {}: video {} has no timestamps file {}", dir,
+                                     video->string(), csv.string()));
+      const std::vector<VideoFrameTime> rows = loadVideoTimestamps(csv.string());
+      auto reader = std::make_shared<VideoReader>(video->string());
+      if (reader->frameCount() > 0 && rows.back().frame >= reader->frameCount())
+        throw InputError(fmt::format("video {}: {} frames, but {} lists frame {}",
+                                     video->string(), reader->frameCount(), csv.string(),
+                                     rows.back().frame));
+      videos_[camera.name] = std::move(reader);
+      for (const VideoFrameTime& row : rows) {
+        times[camera.name].push_back(row.timestamp);
+        frames_in_video[camera.name].push_back(row.frame);
+      }
+      cameras_.push_back(camera.name);
+      continue;
+    }
     if (!fs::is_directory(folder)) {
       warnings_.push_back(fmt::format("camera '{}': no images folder", camera.name));
       continue;
@@ -89,6 +134,8 @@ Sequence::Sequence(const std::string& dir, const std::string& calib_path,
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(folder))
       if (entry.is_regular_file() && isImageFile(entry.path())) files.push_back(entry.path());
+    std::vector<std::pair<double, std::string>> stamped;
+    std::set<std::string> stems;
     std::sort(files.begin(), files.end());
     for (const fs::path& file : files) {
       const std::string stem = file.stem().string();
@@ -98,14 +145,17 @@ Sequence::Sequence(const std::string& dir, const std::string& calib_path,
                                         camera.name, file.filename().string()));
         continue;
       }
-      auto& by_stem = stems_by_camera[camera.name];
-      if (by_stem.count(stem)) {
+      if (!stems.insert(stem).second) {
         warnings_.push_back(fmt::format("camera '{}': skipped {} (another image has stem {})",
                                         camera.name, file.filename().string(), stem));
         continue;
       }
-      by_stem[stem] = file.string();
-      stem_time[stem] = *t;
+      stamped.emplace_back(*t, file.string());
+    }
+    std::sort(stamped.begin(), stamped.end());
+    for (const auto& [t, path] : stamped) {
+      times[camera.name].push_back(t);
+      paths[camera.name].push_back(path);
     }
   }
   if (fs::is_directory(images)) {
@@ -119,16 +169,17 @@ Sequence::Sequence(const std::string& dir, const std::string& calib_path,
           fmt::format("images folder '{}' is not a camera of the rig; ignored", name));
   }
 
-  std::vector<std::pair<double, std::string>> frames;
-  for (const auto& [stem, t] : stem_time) frames.emplace_back(t, stem);
-  std::sort(frames.begin(), frames.end());
-  std::map<std::string, size_t> frame_of_stem;
-  for (size_t i = 0; i < frames.size(); ++i) {
-    timestamps_.push_back(frames[i].first);
-    frame_of_stem[frames[i].second] = i;
+  const std::vector<FrameSet> sets = groupFrameSets(times, frameSetTolerance(times));
+  for (size_t i = 0; i < sets.size(); ++i) {
+    timestamps_.push_back(sets[i].timestamp);
+    for (const auto& [camera, k] : sets[i].images) {
+      capture_times_[camera][i] = times[camera][k];
+      if (videos_.count(camera))
+        video_frames_[camera][i] = frames_in_video[camera][k];
+      else
+        images_[camera][i] = paths[camera][k];
+    }
   }
-  for (const auto& [camera, by_stem] : stems_by_camera)
-    for (const auto& [stem, path] : by_stem) images_[camera][frame_of_stem.at(stem)] = path;
 }
 
 std::string Sequence::imagePath(size_t frame, const std::string& camera) const {
@@ -145,6 +196,18 @@ cv::Mat Sequence::loadImage(size_t frame, const std::string& camera, std::string
   };
   if (frame >= timestamps_.size())
     return failed(fmt::format("frame {} out of range ({} frames)", frame, timestamps_.size()));
+  if (const auto video = videos_.find(camera); video != videos_.end()) {
+    const auto& frames = video_frames_.at(camera);
+    const auto it = frames.find(frame);
+    if (it == frames.end())
+      return failed(fmt::format("camera '{}' has no image at {}", camera,
+                                timestampStem(timestamps_[frame])));
+    std::string reason;
+    cv::Mat image = video->second->frame(it->second, &reason);
+    if (image.empty()) return failed(reason);
+    if (why) why->clear();
+    return image;
+  }
   const std::string path = imagePath(frame, camera);
   if (path.empty())
     return failed(
@@ -161,12 +224,21 @@ cv::Mat Sequence::loadImage(size_t frame, const std::string& camera, std::string
   return image;
 }
 
+std::optional<double> Sequence::captureTime(size_t frame, const std::string& camera) const {
+  const auto cam = capture_times_.find(camera);
+  if (cam == capture_times_.end()) return std::nullopt;
+  const auto it = cam->second.find(frame);
+  if (it == cam->second.end()) return std::nullopt;
+  return it->second;
+}
+
 std::optional<ImageLabels> Sequence::loadLabels(size_t frame, const std::string& camera) const {
   if (frame >= timestamps_.size()) return std::nullopt;
-  // Labels share the image's stem; without an image, fall back to the canonical stem.
+  // Labels share the image's stem (its capture time); without an image, the frame set's.
   const std::string image = imagePath(frame, camera);
   const std::string stem =
-      image.empty() ? timestampStem(timestamps_[frame]) : fs::path(image).stem().string();
+      !image.empty() ? fs::path(image).stem().string()
+                     : timestampStem(captureTime(frame, camera).value_or(timestamps_[frame]));
   const fs::path path = fs::path(dir_) / "labels" / camera / (stem + ".json");
   if (!fs::is_regular_file(path)) return std::nullopt;
   return io::loadLabels(path.string());

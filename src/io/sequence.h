@@ -3,9 +3,13 @@
 //   calib.yaml  map.geojson  poses.tum (optional)  levels.csv (optional)  odometry.csv (optional)
 //   meta.json (optional)
 //   images/<camera>/<timestamp>.jpg|png   labels/<camera>/<timestamp>.json (optional)
+// or, per camera, a recording instead of an image folder:
+//   videos/<camera>.<ext> (any video FFmpeg reads)  videos/<camera>.csv (io/video_timestamps.h)
 // File stems are timestamps in seconds printed with six decimals ("12.350000").
-// A frame set is the images of all cameras with the same timestamp.
+// A frame set is one image per camera, captured within a tolerance of each other
+// (io/frame_sets.h): the same stem on a synchronised rig.
 #include <map>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
@@ -16,6 +20,7 @@
 #include "io/levels_csv.h"
 #include "io/odometry_csv.h"
 #include "io/tum.h"
+#include "io/video_reader.h"
 #include "map/hd_map.h"
 
 namespace parkloc::io {
@@ -40,13 +45,17 @@ class Sequence {
 
   // Frame-set timestamps, ascending (the union over cameras).
   const std::vector<double>& timestamps() const { return timestamps_; }
-  // Cameras of the rig that have an image folder; warnings() says which are missing.
+  // Cameras of the rig that have an image folder or a video; warnings() says which are missing.
   const std::vector<std::string>& cameras() const { return cameras_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
 
-  // Path of a frame's image; empty when that camera has no image at that time.
+  // Path of a frame's image; empty when that camera has no image file at that time (none, or
+  // the camera is recorded as a video).
   std::string imagePath(size_t frame, const std::string& camera) const;
-  // The decoded image; empty when missing or corrupt (the reason in *why when given).
+  // When the camera captured its image of the frame set; empty when it has none.
+  std::optional<double> captureTime(size_t frame, const std::string& camera) const;
+  // The decoded image; empty when missing or corrupt (the reason in *why when given). Video
+  // frames decode fastest in order.
   cv::Mat loadImage(size_t frame, const std::string& camera, std::string* why = nullptr) const;
   std::optional<ImageLabels> loadLabels(size_t frame, const std::string& camera) const;
 
@@ -63,6 +72,11 @@ class Sequence {
   std::vector<std::string> warnings_;
   // camera -> (frame index -> image path)
   std::map<std::string, std::map<size_t, std::string>> images_;
+  // camera -> (frame index -> frame in its video), and the camera's video
+  std::map<std::string, std::map<size_t, int>> video_frames_;
+  std::map<std::string, std::shared_ptr<VideoReader>> videos_;
+  // camera -> (frame index -> capture time)
+  std::map<std::string, std::map<size_t, double>> capture_times_;
 };
 
 }  // namespace parkloc::io

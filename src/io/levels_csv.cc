@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "common/error.h"
+#include "io/csv_file.h"
 
 namespace parkloc::io {
 namespace {
@@ -15,12 +16,6 @@ namespace {
 constexpr const char* kHeader = "timestamp,level";
 constexpr double kTimeSlack = 1e-6;
 
-std::string trimmed(const std::string& s) {
-  const size_t b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const size_t e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
 
 // The reason a level name cannot stand in a row, or empty when it can.
 std::string badLevelName(const std::string& level) {
@@ -36,11 +31,8 @@ std::string badLevelName(const std::string& level) {
 }  // namespace
 
 std::vector<StampedLevel> loadLevels(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw IoError(fmt::format("levels {}: cannot open file", path));
+  std::ifstream in = openCsvWithHeader("levels", path, kHeader);
   std::string line;
-  if (!std::getline(in, line) || trimmed(line) != kHeader)
-    throw InputError(fmt::format("levels {}:1: expected the header '{}'", path, kHeader));
   std::vector<StampedLevel> levels;
   for (size_t line_no = 2; std::getline(in, line); ++line_no) {
     const std::string row = trimmed(line);

@@ -6,26 +6,18 @@
 #include <fstream>
 
 #include "common/error.h"
+#include "io/csv_file.h"
 
 namespace parkloc::io {
 namespace {
 constexpr const char* kHeader = "timestamp,speed,yaw_rate";
 
-std::string trimmed(const std::string& s) {
-  const size_t b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const size_t e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
 }  // namespace
 
 std::vector<OdometrySample> loadOdometry(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw IoError(fmt::format("odometry {}: cannot open file", path));
+  std::ifstream in = openCsvWithHeader("odometry", path, kHeader);
   std::string line;
   size_t line_no = 1;
-  if (!std::getline(in, line) || trimmed(line) != kHeader)
-    throw InputError(fmt::format("odometry {}:1: expected the header '{}'", path, kHeader));
   std::vector<OdometrySample> samples;
   while (std::getline(in, line)) {
     ++line_no;

@@ -9,27 +9,19 @@
 #include <limits>
 
 #include "common/error.h"
+#include "io/csv_file.h"
 
 namespace parkloc::io {
 namespace {
 
 constexpr const char* kHeader = "frame,timestamp";
 
-std::string trimmed(const std::string& s) {
-  const size_t b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const size_t e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
 
 }  // namespace
 
 std::vector<VideoFrameTime> loadVideoTimestamps(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw IoError(fmt::format("timestamps {}: cannot open file", path));
+  std::ifstream in = openCsvWithHeader("timestamps", path, kHeader);
   std::string line;
-  if (!std::getline(in, line) || trimmed(line) != kHeader)
-    throw InputError(fmt::format("timestamps {}:1: expected the header '{}'", path, kHeader));
   std::vector<VideoFrameTime> rows;
   for (size_t line_no = 2; std::getline(in, line); ++line_no) {
     const std::string row = trimmed(line);

@@ -12,7 +12,7 @@ build="${1:?usage: fuzz/run.sh BUILD_DIR SECONDS [TARGET...]}"
 seconds="${2:?usage: fuzz/run.sh BUILD_DIR SECONDS [TARGET...]}"
 shift 2
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(calibration map tum odometry labels image scenario config)
+[ ${#targets[@]} -eq 0 ] && targets=(calibration map tum odometry video_timestamps labels image scenario config)
 runs="${FUZZ_RUNS:-0}"
 work="$build/fuzz-work"
 mkdir -p "$work"

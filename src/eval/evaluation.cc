@@ -64,6 +64,7 @@ void addRotationTags(const io::ImageLabels& labels, double dont_care_occlusion,
 // One camera of a frame set, read once for every configuration.
 struct CameraData {
   std::string name;
+  std::optional<double> capture_time;
   cv::Mat image;
   std::optional<io::ImageLabels> labels;
   std::vector<ocr::TextInstance> full_frame;
@@ -197,6 +198,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
       for (const std::string& camera : seq.cameras()) {
         CameraData c;
         c.name = camera;
+        c.capture_time = seq.captureTime(i, camera);
         c.labels = seq.loadLabels(i, camera);
         if (c.labels) addRotationTags(*c.labels, options.ocr_metrics.dont_care_occlusion, tags);
         if (spotter) c.image = seq.loadImage(i, camera);
@@ -243,6 +245,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         for (const CameraData& c : cameras) {
           localize::CameraInput in;
           in.camera = c.name;
+          in.capture_time = c.capture_time;
           switch (tally.spec.source) {
             case Source::kSpotter:
               in.image = c.image;

@@ -26,6 +26,9 @@ struct CameraInput {
   // When set, these instances are used as they are and no spotting runs (oracle OCR from
   // ground-truth labels, or instances spotted elsewhere).
   std::optional<std::vector<ocr::TextInstance>> instances;
+  // When the image was captured, when not at the frame set's time (cameras not triggered
+  // together; localize/capture_time.h).
+  std::optional<double> capture_time;
 };
 
 struct FrameInput {

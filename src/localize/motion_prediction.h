@@ -66,6 +66,11 @@ class MotionPrediction {
   void forgetFixes() { last_fix_.reset(); }
 
   const MotionOptions& options() const { return options_; }
+  // The odometry sample held at the last frame set (speed and yaw rate now), when odometry
+  // drives the prediction.
+  std::optional<OdometrySample> heldOdometry() const {
+    return odometryDrives() ? std::optional<OdometrySample>(hold_) : std::nullopt;
+  }
 
  private:
   void predictTo(double t, PoseEkf& ekf, std::vector<std::string>& warnings) const;

@@ -1,5 +1,6 @@
 #include "localize/pipeline.h"
 
+#include "localize/capture_time.h"
 #include "localize/floor_heights.h"
 #include "localize/search_window.h"
 #include "localize/spotting.h"
@@ -17,7 +18,8 @@ PipelineOptions PipelineOptions::paper(PipelineOptions o) {
 }
 
 struct Pipeline::Impl {
-  geometry::Rig rig;
+  geometry::Rig nominal_rig;  // as calibrated
+  geometry::Rig rig;          // this frame set's: each camera moved to its capture time
   map::HdMap map;
   PipelineOptions options;
   ocr::TextSpotter* spotter = nullptr;
@@ -34,14 +36,15 @@ struct Pipeline::Impl {
   PaperPipeline paper;
 
   Impl(geometry::Rig r, map::HdMap m, const PipelineOptions& o, ocr::TextSpotter* s)
-      : rig(std::move(r)),
+      : nominal_rig(r),
+        rig(std::move(r)),
         map(std::move(m)),
         options(o),
         spotter(s),
         floors(map),
         ekf(o.ekf),
         motion(o.motion, o.paper_mode && o.paper_pipeline.heading == PaperHeadingSource::kOdometry),
-        reading(rig, map, floors, o.reading, o.reading.map_guided && !o.paper_mode),
+        reading(rig, nominal_rig, map, floors, o.reading, o.reading.map_guided && !o.paper_mode),
         level(map, o.levels, o.level),
         associator(rig, map, floors, o.association, o.paper_modules, o.measurement.polygon_model,
                    o.paper_mode),
@@ -73,6 +76,7 @@ struct Pipeline::Impl {
     //    search window's texts follow the vehicle.
     const Stopwatch motion_time;
     const FrameMotion moved = motion.advance(frame, ekf, result.warnings);
+    rig = rigAtFrameTime(nominal_rig, frame, motion.heldOdometry());
     level.predict(frame.timestamp);
     if (options.paper_mode) paper.integrateOdometryYaw(moved);
     if (!lifecycle.searchWindow().empty())
@@ -87,7 +91,7 @@ struct Pipeline::Impl {
 
     // 3. Spotting, camera by camera in rig order.
     const std::vector<bool> supplied = spotCameras(
-        frame, rig, spotter, plan.choice.full_frame,
+        frame, nominal_rig, spotter, plan.choice.full_frame,
         [&](size_t c) { return reading.request(c, plan, ekf.pose()); }, result);
 
     // 4. Association: class, score, AFM (paper 3.3), exact matching (3.3) on the level
@@ -143,7 +147,7 @@ Pipeline& Pipeline::operator=(Pipeline&&) noexcept = default;
 FrameResult Pipeline::process(const FrameInput& frame) { return impl_->process(frame); }
 void Pipeline::reset() { impl_->reset(); }
 const PipelineOptions& Pipeline::options() const { return impl_->options; }
-const geometry::Rig& Pipeline::rig() const { return impl_->rig; }
+const geometry::Rig& Pipeline::rig() const { return impl_->nominal_rig; }
 const map::HdMap& Pipeline::map() const { return impl_->map; }
 
 }  // namespace parkloc::localize

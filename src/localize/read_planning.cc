@@ -6,9 +6,11 @@
 
 namespace parkloc::localize {
 
-ReadPlanner::ReadPlanner(const geometry::Rig& rig, const map::HdMap& map,
-                         const FloorHeights& floors, const ReadingOptions& options, bool guided)
+ReadPlanner::ReadPlanner(const geometry::Rig& rig, const geometry::Rig& calibrated_rig,
+                         const map::HdMap& map, const FloorHeights& floors,
+                         const ReadingOptions& options, bool guided)
     : rig_(rig),
+      calibrated_rig_(calibrated_rig),
       map_(map),
       floors_(floors),
       options_(options),
@@ -136,7 +138,7 @@ void ReadPlanner::chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& 
 
 ocr::SpotRequest ReadPlanner::request(size_t c, ReadPlan& plan, const geometry::Pose2& pose) const {
   ocr::SpotRequest request;
-  request.camera = &rig_.cameras[c];
+  request.camera = &calibrated_rig_.cameras[c];
   if (!plan.choice.full_frame[c]) {
     for (auto& r : plan.regions[c]) {
       request.lexicon.insert(request.lexicon.end(), r.roi.expected_texts.begin(),

@@ -151,9 +151,11 @@ struct ReadPlan {
 
 class ReadPlanner {
  public:
-  // The rig, map and floors must outlive the planner.
-  ReadPlanner(const geometry::Rig& rig, const map::HdMap& map, const FloorHeights& floors,
-              const ReadingOptions& options, bool guided);
+  // The rigs, map and floors must outlive the planner. `rig` places the regions (each camera
+  // where it stood when it captured its image, localize/capture_time.h); the spotter gets the
+  // cameras of `calibrated_rig` (its floor views are made once per calibration).
+  ReadPlanner(const geometry::Rig& rig, const geometry::Rig& calibrated_rig, const map::HdMap& map,
+              const FloorHeights& floors, const ReadingOptions& options, bool guided);
   void reset();
 
   // The plan of the next frame set at the filter's predicted pose. `tracking`: the filter's
@@ -174,6 +176,7 @@ class ReadPlanner {
   void chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& candidates, bool sweeping);
 
   const geometry::Rig& rig_;
+  const geometry::Rig& calibrated_rig_;
   const map::HdMap& map_;
   const FloorHeights& floors_;
   ReadingOptions options_;

@@ -120,6 +120,7 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
     for (const auto& camera : sequence.rig().cameras) {
       localize::CameraInput c;
       c.camera = camera.name;
+      c.capture_time = sequence.captureTime(i, camera.name);
       if (need_images) {
         std::string why;
         c.image = sequence.loadImage(i, camera.name, &why);

@@ -92,7 +92,8 @@ TEST(RealOcrDrive, LocalizesTheTestDriveWithinTheHeadlineBounds) {
     input.odometry = run::odometryBetween(sequence.odometry(), previous, input.timestamp);
     previous = input.timestamp;
     for (const std::string& camera : sequence.cameras())
-      input.cameras.push_back({camera, sequence.loadImage(i, camera), std::nullopt});
+      input.cameras.push_back(
+          {camera, sequence.loadImage(i, camera), std::nullopt, sequence.captureTime(i, camera)});
 
     const localize::FrameResult result = pipeline.process(input);
     if (result.level_decided) {

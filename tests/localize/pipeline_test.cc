@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "localize/box_plot_filter.h"
+#include "localize/capture_time.h"
 #include "synthetic_scene.h"
 
 namespace parkloc::localize {
@@ -471,7 +472,7 @@ TEST_F(PipelineTest, BadInputIsReportedAndTheRestIsUsed) {
   auto in = frame(drive, 5);
   in.cameras.erase(in.cameras.begin());
   in.cameras.front().instances.reset();
-  in.cameras.push_back(CameraInput{"roof", cv::Mat(), std::nullopt});
+  in.cameras.push_back(CameraInput{"roof", cv::Mat(), std::nullopt, std::nullopt});
   in.odometry.push_back({0.55, std::nan(""), 0.0});
   const auto r = pipeline.process(in);
   EXPECT_EQ(r.status, TrackingStatus::kOk);
@@ -633,6 +634,52 @@ TEST_F(PipelineTest, AnImageWhoseSizeIsNotItsCalibrationsIsSkippedWithAWarning) 
                                  model.width, model.height)),
             std::string::npos)
       << all;
+}
+
+TEST_F(PipelineTest, CamerasCapturedOffTheFrameSetsTimeAreMovedToIt) {
+  // The rear and left cameras capture 40 ms and 25 ms after the frame set's time (at 2 m/s:
+  // 8 and 5 cm further on). Told so, the pipeline places the vehicle at the frame set's time;
+  // not told, it lands between the capture times.
+  const std::map<std::string, double> late{{"rear", 0.040}, {"left", 0.025}};
+  Drive drive;
+  const auto run = [&](bool told) {
+    Pipeline pipeline(rig, map);
+    double sum = 0.0;
+    int frames = 0;
+    for (int k = 0; k < 40; ++k) {
+      FrameInput in = frame(drive, k);
+      for (CameraInput& c : in.cameras) {
+        const auto offset = late.find(c.camera);
+        if (offset == late.end()) continue;
+        const double t = in.timestamp + offset->second;
+        c.instances = testing::spotExactly(*rig.find(c.camera), map, drive.truth(t), spot, &rng);
+        if (told) c.capture_time = t;
+      }
+      const FrameResult r = pipeline.process(in);
+      if (k < 5 || !r.has_pose) continue;
+      sum += positionError(r, drive.truth(in.timestamp));
+      ++frames;
+    }
+    EXPECT_GT(frames, 30);
+    return sum / std::max(frames, 1);
+  };
+  const double told = run(true), not_told = run(false);
+  EXPECT_LT(told, 0.005);
+  EXPECT_GT(not_told, 2.0 * told);
+  EXPECT_EQ(Pipeline(rig, map).rig().cameras[1].vehicle_from_camera.matrix(),
+            rig.cameras[1].vehicle_from_camera.matrix());
+}
+
+TEST(CaptureTime, TheVehicleMovesAlongAnArc) {
+  OdometrySample motion;
+  motion.speed = 2.0;
+  motion.yaw_rate = 0.5;
+  const geometry::Rigid3 T = vehicleMotionOver(motion, 0.1);
+  // 0.2 m of arc turning 0.05 rad: the chord is 0.2 m long (to 1e-4) along half the turn.
+  EXPECT_NEAR(T.translation().norm(), 0.2, 1e-4);
+  EXPECT_NEAR(std::atan2(T.translation().y(), T.translation().x()), 0.025, 1e-9);
+  EXPECT_NEAR(std::atan2(T.linear()(1, 0), T.linear()(0, 0)), 0.05, 1e-12);
+  EXPECT_TRUE(vehicleMotionOver(motion, 0.0).isApprox(geometry::Rigid3::Identity()));
 }
 
 }  // namespace

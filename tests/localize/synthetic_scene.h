@@ -141,7 +141,7 @@ inline FrameInput placeholderFrame(const geometry::Rig& rig, double t, double sp
   in.timestamp = t;
   for (const auto& camera : rig.cameras)
     in.cameras.push_back(
-        {camera.name, cv::Mat(camera.model.height, camera.model.width, CV_8UC3), {}});
+        {camera.name, cv::Mat(camera.model.height, camera.model.width, CV_8UC3), {}, {}});
   OdometrySample odo;
   odo.timestamp = t;
   odo.speed = speed;

@@ -17,7 +17,9 @@ void describe(OptionVisitor& v, mapping::ConsensusOptions& o) {
   v.value("min_frame_sets", o.min_frame_sets,
           "a landmark's reading was seen in at least this many frame sets");
   v.value("min_agreement", o.min_agreement,
-          "... and in this share of the frame sets that read anything at its place");
+          "... and in this share of the frame sets that read anything at its place ...");
+  v.value("min_margin", o.min_margin,
+          "... and in this many times the runner-up reading's frame sets (else ambiguous)");
   v.value("loop_radius_m", o.loop_radius_m,
           "two places of one reading this close are one text seen again (a loop)");
 }

@@ -48,6 +48,7 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
                         {"frame_sets", l->frame_sets},
                         {"misreads", l->misreads},
                         {"rms_px", l->rms_px},
+                        {"median_px", l->median_px},
                         {"outlier_corners", l->outlier_corners}};
     if (l->position_sigma) j["position_sigma"] = *l->position_sigma;
     if (l->heading_sigma) j["heading_sigma"] = *l->heading_sigma;

@@ -73,11 +73,22 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
         winner = &members;
       }
     }
-    const int all_frames = distinctFrameSets(sightings, place.members);
+    // A reading that is part of the winner ("28" of "286") is the same text cut by the
+    // image's border: it neither competes with the winner nor counts against its agreement.
+    const std::string& winning_text = sightings[winner->front()].text;
+    int runner_up = 0;
+    std::vector<size_t> competing = *winner;
+    for (const auto& [text, members] : by_text) {
+      if (&members == winner || winning_text.find(text) != std::string::npos) continue;
+      runner_up = std::max(runner_up, distinctFrameSets(sightings, members));
+      competing.insert(competing.end(), members.begin(), members.end());
+    }
+    const int all_frames = distinctFrameSets(sightings, competing);
     const int misreads = static_cast<int>(place.members.size() - winner->size());
     out.misreads += static_cast<size_t>(misreads);
     if (best.first < options.min_frame_sets ||
-        best.first < options.min_agreement * static_cast<double>(all_frames)) {
+        best.first < options.min_agreement * static_cast<double>(all_frames) ||
+        best.first < options.min_margin * runner_up) {
       ++out.weak_places;
       continue;
     }

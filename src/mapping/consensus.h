@@ -27,8 +27,12 @@ struct ConsensusOptions {
   // A landmark's reading was seen in at least this many frame sets (the legibility
   // bar) ...
   int min_frame_sets = 3;
-  // ... and in at least this share of the frame sets that read anything at its place.
-  double min_agreement = 0.7;
+  // ... and in at least this share of the frame sets that read anything at its place ...
+  double min_agreement = 0.5;
+  // ... and in this many times the frame sets of the runner-up reading: a place where two
+  // readings compete (a 2 read as 7 in a font that blurs them) is left out rather than
+  // guessed.
+  double min_margin = 2.0;
   // Two places with the same winning reading this close are one text seen twice (a loop).
   double loop_radius_m = 4.0;
 };

@@ -93,6 +93,7 @@ EstimationSummary MapProblem::solve() {
 void MapProblem::measureResiduals() {
   std::vector<double> sum(landmarks_.size(), 0.0);
   std::vector<int> count(landmarks_.size(), 0);
+  std::vector<std::vector<double>> errors(landmarks_.size());
   for (LandmarkEstimate& l : landmarks_) l.outlier_corners = 0;
   for (const CornerBlock& block : corners_) {
     const auto id = static_cast<ceres::ResidualBlockId>(block.residual_id);
@@ -103,11 +104,17 @@ void MapProblem::measureResiduals() {
     const double px2 = (r[0] * r[0] + r[1] * r[1]) * options_.pixel_sigma * options_.pixel_sigma;
     sum[block.landmark] += px2;
     ++count[block.landmark];
+    errors[block.landmark].push_back(std::sqrt(px2));
     if (std::sqrt(px2) > options_.robust_scale * options_.pixel_sigma)
       ++landmarks_[block.landmark].outlier_corners;
   }
-  for (size_t t = 0; t < landmarks_.size(); ++t)
+  for (size_t t = 0; t < landmarks_.size(); ++t) {
     landmarks_[t].rms_px = count[t] > 0 ? std::sqrt(sum[t] / count[t]) : 0.0;
+    auto& e = errors[t];
+    if (e.empty()) continue;
+    std::nth_element(e.begin(), e.begin() + static_cast<long>(e.size() / 2), e.end());
+    landmarks_[t].median_px = e[e.size() / 2];
+  }
 }
 
 }  // namespace parkloc::mapping

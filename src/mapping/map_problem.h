@@ -36,9 +36,9 @@ struct EstimationOptions {
   // Odometry between consecutive frame sets (1 sigma): a floor for standstill plus a share of
   // the distance (wheel scale, slip), and the same for the yaw (gyro noise and bias).
   double odometry_min_sigma_m = 0.002;
-  double odometry_sigma_per_m = 0.01;
+  double odometry_sigma_per_m = 0.02;
   double odometry_min_yaw_sigma_rad = 0.0005;
-  double odometry_yaw_sigma_per_m = 0.002;
+  double odometry_yaw_sigma_per_m = 0.005;
   int max_iterations = 100;
   int threads = 2;
 };
@@ -71,7 +71,8 @@ class MapProblem {
   ~MapProblem();
 
   EstimationSummary solve();
-  // Fills each landmark's rms_px and outlier_corners from the corner factors' errors.
+  // Fills each landmark's rms_px, median_px and outlier_corners from the corner factors'
+  // errors.
   void measureResiduals();
   // Fills each landmark's position_sigma and heading_sigma from the covariance of the
   // solution; false (and the sigmas left empty) when Ceres cannot compute it (rank

@@ -27,8 +27,9 @@ TEST(MapComparison, AlignsTheBuiltFrameAndMeasuresEachError) {
   // The built map: the truth in another frame, N1 2 cm off, N2 turned 1 degree and 10 %
   // wider, N5 missing, a phantom text and a right text at a wrong place.
   const geometry::Pose2 built_from_true(-3.0, 7.0, 1.1);
+  const map::HdMap truth = truthMap();
   std::vector<map::Landmark> built;
-  for (const map::Landmark& t : truthMap().landmarks()) {
+  for (const map::Landmark& t : truth.landmarks()) {
     if (t.text == "N5") continue;
     map::Landmark b = t;
     if (t.text == "N1") b.position.x() += 0.02;
@@ -43,7 +44,7 @@ TEST(MapComparison, AlignsTheBuiltFrameAndMeasuresEachError) {
   }
   built.push_back(number("Q9", 0.0, 0.0));
   const MapComparison c =
-      compareMaps(map::HdMap(built), truthMap(), "", /*legible_frames=*/{}, {});
+      compareMaps(map::HdMap(built), truth, "", /*legible_frames=*/{}, {});
   EXPECT_EQ(c.level, "B1");
   ASSERT_TRUE(c.fit);
   EXPECT_EQ(c.position_m.count, 4u);
@@ -58,13 +59,14 @@ TEST(MapComparison, AlignsTheBuiltFrameAndMeasuresEachError) {
 }
 
 TEST(MapComparison, CompletenessCountsOnlyWhatTheDriveShowedLegibly) {
+  const map::HdMap truth = truthMap();
   std::vector<map::Landmark> built;
-  for (const map::Landmark& t : truthMap().landmarks())
+  for (const map::Landmark& t : truth.landmarks())
     if (t.text != "N5" && t.text != "N4") built.push_back(t);
   // N5 was legible in 2 frame sets only: not counted; N4 in 3: counted, and missing.
   const std::map<std::string, int> legible = {{"B1:N0", 9}, {"B1:N1", 9}, {"B1:N2", 9},
                                               {"B1:N3", 9}, {"B1:N4", 3}, {"B1:N5", 2}};
-  const MapComparison c = compareMaps(map::HdMap(built), truthMap(), "B1", legible, {});
+  const MapComparison c = compareMaps(map::HdMap(built), truth, "B1", legible, {});
   EXPECT_EQ(c.legible, 5);
   EXPECT_EQ(c.legible_found, 4);
   ASSERT_EQ(c.missing.size(), 1u);

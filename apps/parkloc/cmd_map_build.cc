@@ -149,10 +149,13 @@ void run(const MapBuildArgs& a) {
       "{} loops closed\n",
       a.out, built.size(), build.drives.size(), frame_sets, build.consensus.misreads,
       build.consensus.loops);
-  fmt::print("  reading {:.1f} s ({:.0f} ms per frame set), estimation {:.2f} s ({} iterations, "
-             "{} corner and {} odometry factors)\n",
-             reading_s, frame_sets ? 1000.0 * reading_s / frame_sets : 0.0, e.seconds,
-             e.iterations, e.corner_factors, e.odometry_factors);
+  fmt::print("  reading {}, estimation {:.2f} s ({} iterations, {} corner and {} odometry "
+             "factors)\n",
+             a.sightings.empty()
+                 ? fmt::format("{:.1f} s ({:.0f} ms per frame set)", reading_s,
+                               frame_sets ? 1000.0 * reading_s / frame_sets : 0.0)
+                 : "from " + a.sightings,
+             e.seconds, e.iterations, e.corner_factors, e.odometry_factors);
   if (!build.inconsistent.empty())
     fmt::print("  left out, corners fit no floor text: {}\n", fmt::join(build.inconsistent, ", "));
   for (const std::string& p : build.problems) fmt::print("  problem: {}\n", p);

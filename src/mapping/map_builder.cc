@@ -151,6 +151,7 @@ MapBuild buildMap(const std::vector<const io::Sequence*>& drives, ocr::TextSpott
     poses.push_back(deadReckon(drive.odometry(), drive.timestamps(), drive.dir()));
     std::vector<Sighting> read;
     if (read_before) {
+      stats[d].frame_sets = drive.timestamps().size();
       for (const Sighting& s : *read_before) {
         if (s.drive != d) continue;
         if (s.frame >= drive.timestamps().size() || s.camera < 0 ||

@@ -8,8 +8,8 @@
 #include <iostream>
 
 #include "apps/parkloc/command.h"
-#include "apps/parkloc/map_commands.h"
 #include "apps/parkloc/config_args.h"
+#include "apps/parkloc/map_commands.h"
 #include "apps/parkloc/progress_line.h"
 #include "common/error.h"
 #include "eval/dataset.h"

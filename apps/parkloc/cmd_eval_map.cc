@@ -29,8 +29,8 @@ struct EvalMapArgs {
 };
 
 nlohmann::json summaryJson(const eval::Summary& s) {
-  return {{"count", s.count}, {"mean", s.mean}, {"rms", s.rmse}, {"max", s.max},
-          {"median", s.median}};
+  return {
+      {"count", s.count}, {"mean", s.mean}, {"rms", s.rmse}, {"max", s.max}, {"median", s.median}};
 }
 
 void run(const EvalMapArgs& a) {
@@ -42,28 +42,29 @@ void run(const EvalMapArgs& a) {
       legible[id] += frames;
   const eval::MapComparisonOptions options;
   const eval::MapComparison c = eval::compareMaps(built, truth, a.level, legible, options);
-  if (!c.fit) throw InputError(fmt::format("{}: fewer than two texts match {} on level '{}'",
-                                           a.built, a.truth, c.level));
+  if (!c.fit)
+    throw InputError(
+        fmt::format("{}: fewer than two texts match {} on level '{}'", a.built, a.truth, c.level));
 
   fmt::print("{} against {} (level '{}'), SE(2) fit over {} texts\n", a.built, a.truth, c.level,
              c.position_m.count);
   fmt::print("  {:<28} {:>9} {:>9} {:>9}\n", "", "mean", "RMS", "max");
   fmt::print("  {:<28} {:>9.2f} {:>9.2f} {:>9.2f}\n", "position error (cm)",
              100 * c.position_m.mean, 100 * c.position_m.rmse, 100 * c.position_m.max);
-  fmt::print("  {:<28} {:>9.3f} {:>9.3f} {:>9.3f}\n", "heading error (deg)",
-             c.abs_heading_deg.mean, c.abs_heading_deg.rmse, c.abs_heading_deg.max);
-  fmt::print("  {:<28} {:>9.2f} {:>9.2f} {:>9.2f}\n", "width error (%)",
-             100 * c.abs_width_rel.mean, 100 * c.abs_width_rel.rmse, 100 * c.abs_width_rel.max);
+  fmt::print("  {:<28} {:>9.3f} {:>9.3f} {:>9.3f}\n", "heading error (deg)", c.abs_heading_deg.mean,
+             c.abs_heading_deg.rmse, c.abs_heading_deg.max);
+  fmt::print("  {:<28} {:>9.2f} {:>9.2f} {:>9.2f}\n", "width error (%)", 100 * c.abs_width_rel.mean,
+             100 * c.abs_width_rel.rmse, 100 * c.abs_width_rel.max);
   fmt::print("  {:<28} {:>9.2f} {:>9.2f} {:>9.2f}\n", "height error (%)",
-             100 * c.abs_height_rel.mean, 100 * c.abs_height_rel.rmse,
-             100 * c.abs_height_rel.max);
-  fmt::print("  completeness: {} of {} parking numbers{} in the map ({:.1f} %)\n",
-             c.legible_found, c.legible,
-             a.drives.empty() ? "" : fmt::format(" legible in >= {} frame sets",
-                                                 options.legible_frame_sets),
+             100 * c.abs_height_rel.mean, 100 * c.abs_height_rel.rmse, 100 * c.abs_height_rel.max);
+  fmt::print("  completeness: {} of {} parking numbers{} in the map ({:.1f} %)\n", c.legible_found,
+             c.legible,
+             a.drives.empty()
+                 ? ""
+                 : fmt::format(" legible in >= {} frame sets", options.legible_frame_sets),
              100.0 * c.completeness);
-  fmt::print("  phantoms and wrong texts: {} of {} built landmarks{}\n", c.phantoms.size(),
-             c.built, c.phantoms.empty() ? "" : fmt::format(" ({})", fmt::join(c.phantoms, ", ")));
+  fmt::print("  phantoms and wrong texts: {} of {} built landmarks{}\n", c.phantoms.size(), c.built,
+             c.phantoms.empty() ? "" : fmt::format(" ({})", fmt::join(c.phantoms, ", ")));
   if (!c.missing.empty()) fmt::print("  missing: {}\n", fmt::join(c.missing, ", "));
 
   if (a.out.empty()) return;
@@ -76,24 +77,25 @@ void run(const EvalMapArgs& a) {
                       {"width_rel", e.width_rel},
                       {"height_rel", e.height_rel},
                       {"wrong_place", e.wrong_place}});
-  const nlohmann::json j = {
-      {"built", a.built},
-      {"truth", a.truth},
-      {"level", c.level},
-      {"fit", {{"x", c.fit->to_from_from.x}, {"y", c.fit->to_from_from.y},
-               {"yaw", c.fit->to_from_from.yaw}}},
-      {"position_m", summaryJson(c.position_m)},
-      {"abs_heading_deg", summaryJson(c.abs_heading_deg)},
-      {"abs_width_rel", summaryJson(c.abs_width_rel)},
-      {"abs_height_rel", summaryJson(c.abs_height_rel)},
-      {"built_landmarks", c.built},
-      {"true_parking_numbers", c.true_parking_numbers},
-      {"legible", c.legible},
-      {"legible_found", c.legible_found},
-      {"completeness", c.completeness},
-      {"missing", c.missing},
-      {"phantoms", c.phantoms},
-      {"landmarks", errors}};
+  const nlohmann::json j = {{"built", a.built},
+                            {"truth", a.truth},
+                            {"level", c.level},
+                            {"fit",
+                             {{"x", c.fit->to_from_from.x},
+                              {"y", c.fit->to_from_from.y},
+                              {"yaw", c.fit->to_from_from.yaw}}},
+                            {"position_m", summaryJson(c.position_m)},
+                            {"abs_heading_deg", summaryJson(c.abs_heading_deg)},
+                            {"abs_width_rel", summaryJson(c.abs_width_rel)},
+                            {"abs_height_rel", summaryJson(c.abs_height_rel)},
+                            {"built_landmarks", c.built},
+                            {"true_parking_numbers", c.true_parking_numbers},
+                            {"legible", c.legible},
+                            {"legible_found", c.legible_found},
+                            {"completeness", c.completeness},
+                            {"missing", c.missing},
+                            {"phantoms", c.phantoms},
+                            {"landmarks", errors}};
   const std::string json_path = (fs::path(a.out) / "map_eval.json").string();
   std::ofstream(json_path) << j.dump(2) << "\n";
   // The built map in the true frame over the true map's level.

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "apps/parkloc/command.h"
 #include "apps/parkloc/map_commands.h"

@@ -77,8 +77,8 @@ void run(const MapBuildArgs& a) {
   mapping::MapBuild build = mapping::buildMap(
       drives, spotter.get(), config.map_build,
       [&](size_t d, size_t done, size_t total) {
-        progress({fmt::format("reading {}", fs::path(a.drives[d]).filename().string()), done,
-                  total});
+        progress(
+            {fmt::format("reading {}", fs::path(a.drives[d]).filename().string()), done, total});
       },
       read_before ? &*read_before : nullptr);
   progress.finish();
@@ -101,9 +101,9 @@ void run(const MapBuildArgs& a) {
                          {"unmatched", fit.unmatched}};
     fmt::print("anchors: {} fit over {} anchors, rms {:.3f} m, scale {:.4f}{}\n",
                a.similarity ? "similarity" : "rigid", fit.used.size(), fit.fit.rms, fit.fit.scale,
-               fit.unmatched.empty() ? ""
-                                     : fmt::format(" ({} not in the built map)",
-                                                   fit.unmatched.size()));
+               fit.unmatched.empty()
+                   ? ""
+                   : fmt::format(" ({} not in the built map)", fit.unmatched.size()));
   }
   std::vector<map::Landmark> landmarks;
   if (existing) {
@@ -119,8 +119,7 @@ void run(const MapBuildArgs& a) {
                        {"kept_unseen", merge.kept_unseen}};
     fmt::print("merge into {}: {} confirmed, {} moved, {} added, {} kept unseen\n", a.merge,
                merge.confirmed, merge.moved.size(), merge.added.size(), merge.kept_unseen);
-    for (const std::string& text : merge.moved)
-      fmt::print("  moved: {}\n", text);
+    for (const std::string& text : merge.moved) fmt::print("  moved: {}\n", text);
   } else {
     for (const auto& l : build.landmarks) landmarks.push_back(l.toLandmark(a.level));
   }
@@ -135,7 +134,8 @@ void run(const MapBuildArgs& a) {
   writeText(replaceExtension(a.out, ".svg"),
             eval::mapPlotSvg(fmt::format("{}: {} landmarks", a.out, built.size()), built, paths));
   writeText(replaceExtension(a.out, ".report.json"), report.dump(2) + "\n");
-  if (a.sightings.empty()) mapping::saveSightings(build.sightings, replaceExtension(a.out, ".sightings.jsonl"));
+  if (a.sightings.empty())
+    mapping::saveSightings(build.sightings, replaceExtension(a.out, ".sightings.jsonl"));
 
   const mapping::EstimationSummary& e = build.estimation;
   size_t frame_sets = 0;
@@ -149,13 +149,13 @@ void run(const MapBuildArgs& a) {
       "{} loops closed\n",
       a.out, built.size(), build.drives.size(), frame_sets, build.consensus.misreads,
       build.consensus.loops);
-  fmt::print("  reading {}, estimation {:.2f} s ({} iterations, {} corner and {} odometry "
-             "factors)\n",
-             a.sightings.empty()
-                 ? fmt::format("{:.1f} s ({:.0f} ms per frame set)", reading_s,
-                               frame_sets ? 1000.0 * reading_s / frame_sets : 0.0)
-                 : "from " + a.sightings,
-             e.seconds, e.iterations, e.corner_factors, e.odometry_factors);
+  fmt::print(
+      "  reading {}, estimation {:.2f} s ({} iterations, {} corner and {} odometry "
+      "factors)\n",
+      a.sightings.empty() ? fmt::format("{:.1f} s ({:.0f} ms per frame set)", reading_s,
+                                        frame_sets ? 1000.0 * reading_s / frame_sets : 0.0)
+                          : "from " + a.sightings,
+      e.seconds, e.iterations, e.corner_factors, e.odometry_factors);
   if (!build.inconsistent.empty())
     fmt::print("  left out, corners fit no floor text: {}\n", fmt::join(build.inconsistent, ", "));
   for (const std::string& p : build.problems) fmt::print("  problem: {}\n", p);

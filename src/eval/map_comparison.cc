@@ -69,8 +69,8 @@ MapComparison compareMaps(const map::HdMap& built, const map::HdMap& truth,
     const map::Landmark& t = *matches[m].second;
     LandmarkError e;
     e.text = b.text;
-    const Eigen::Vector2d p = out.fit ? out.fit->apply(b.position.head<2>())
-                                      : Eigen::Vector2d(b.position.head<2>());
+    const Eigen::Vector2d p =
+        out.fit ? out.fit->apply(b.position.head<2>()) : Eigen::Vector2d(b.position.head<2>());
     const double yaw = out.fit ? out.fit->to_from_from.yaw : 0.0;
     e.position_m = (p - t.position.head<2>()).norm();
     e.heading_deg = geometry::wrapAngle(b.heading + yaw - t.heading) * 180.0 / M_PI;

@@ -38,8 +38,8 @@ struct LandmarkError {
 struct MapComparison {
   std::string level;
   std::optional<geometry::PlanarFit> fit;  // built -> true
-  std::vector<LandmarkError> errors;        // matched landmarks, wrong places included
-  Summary position_m;                       // over matches not at a wrong place
+  std::vector<LandmarkError> errors;       // matched landmarks, wrong places included
+  Summary position_m;                      // over matches not at a wrong place
   Summary abs_heading_deg;
   Summary abs_width_rel;
   Summary abs_height_rel;
@@ -47,7 +47,7 @@ struct MapComparison {
   int true_parking_numbers = 0;  // on the level
   int legible = 0;               // of them, legible enough (all when no drives are given)
   int legible_found = 0;
-  double completeness = 0.0;     // legible_found / legible
+  double completeness = 0.0;          // legible_found / legible
   std::vector<std::string> missing;   // legible, not in the built map
   std::vector<std::string> phantoms;  // built, text not on the true level, or at a wrong place
 };

@@ -14,8 +14,8 @@
 namespace parkloc::mapping {
 
 struct AnchorFit {
-  geometry::PlanarFit fit;            // built map -> anchors' frame
-  std::vector<std::string> used;      // anchors matched, in the order of fit.residuals
+  geometry::PlanarFit fit;             // built map -> anchors' frame
+  std::vector<std::string> used;       // anchors matched, in the order of fit.residuals
   std::vector<std::string> unmatched;  // anchors the built map has no landmark for
 };
 

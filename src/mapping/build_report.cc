@@ -7,9 +7,10 @@ namespace parkloc::mapping {
 nlohmann::json sightingHistogram(const MapBuild& build) {
   nlohmann::json bins = {{"3-4", 0}, {"5-9", 0}, {"10-19", 0}, {"20+", 0}};
   for (const LandmarkEstimate& l : build.landmarks) {
-    const char* bin = l.frame_sets < 5 ? "3-4" : l.frame_sets < 10 ? "5-9"
-                                             : l.frame_sets < 20 ? "10-19"
-                                                                 : "20+";
+    const char* bin = l.frame_sets < 5    ? "3-4"
+                      : l.frame_sets < 10 ? "5-9"
+                      : l.frame_sets < 20 ? "10-19"
+                                          : "20+";
     bins[bin] = bins[bin].get<int>() + 1;
   }
   return bins;
@@ -33,9 +34,8 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
   }
   std::vector<const LandmarkEstimate*> order;
   for (const LandmarkEstimate& l : build.landmarks) order.push_back(&l);
-  std::stable_sort(order.begin(), order.end(), [](const auto* a, const auto* b) {
-    return a->frame_sets > b->frame_sets;
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto* a, const auto* b) { return a->frame_sets > b->frame_sets; });
   nlohmann::json landmarks = nlohmann::json::array();
   for (const LandmarkEstimate* l : order) {
     nlohmann::json j = {{"text", l->text},

@@ -24,7 +24,7 @@ struct ConsensusOptions {
   // Sightings cast from further than this are left out: the floor's footprint of a pixel
   // grows with range, and with it the cast's error.
   double max_range_m = 9.0;
-  // A landmark's reading was seen in at least this many frame sets (the legibility
+  // A landmark's reading was seen in at least this many frame sets (the targets' legibility
   // bar) ...
   int min_frame_sets = 3;
   // ... and in at least this share of the frame sets that read anything at its place ...
@@ -49,8 +49,8 @@ struct TextTrack {
 
 struct Consensus {
   std::vector<TextTrack> tracks;
-  size_t unplaced = 0;   // sightings whose rays missed the floor or beyond max_range_m
-  size_t misreads = 0;   // sightings outvoted at their place
+  size_t unplaced = 0;     // sightings whose rays missed the floor or beyond max_range_m
+  size_t misreads = 0;     // sightings outvoted at their place
   size_t weak_places = 0;  // places whose reading was seen too rarely or disagreed too much
   size_t loops = 0;        // places merged with another of the same reading
   // Readings that won two places far apart: left out of the map.

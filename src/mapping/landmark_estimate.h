@@ -21,11 +21,11 @@ struct LandmarkEstimate {
   // From the estimation's covariance (1 sigma): per axis of the centre, and the heading.
   std::optional<double> position_sigma;
   std::optional<double> heading_sigma;
-  int sightings = 0;   // camera readings that agree on `text`
-  int frame_sets = 0;  // distinct frame sets among them
-  int misreads = 0;    // readings at its place outvoted by `text`
-  double rms_px = 0.0;     // corner reprojection error after the estimation
-  double median_px = 0.0;  // its median over the corners: what most of them say
+  int sightings = 0;        // camera readings that agree on `text`
+  int frame_sets = 0;       // distinct frame sets among them
+  int misreads = 0;         // readings at its place outvoted by `text`
+  double rms_px = 0.0;      // corner reprojection error after the estimation
+  double median_px = 0.0;   // its median over the corners: what most of them say
   int outlier_corners = 0;  // corners the robust loss mostly ignores
   // Set by merging: the existing map had it elsewhere (metres moved), or not at all.
   std::optional<double> moved_m;

@@ -66,9 +66,9 @@ MapBuild estimateMap(const std::vector<const geometry::Rig*>& rigs,
   const auto cast = castAll(sightings, rigs, poses);
   build.consensus = formConsensus(sightings, cast, options.consensus);
   if (build.consensus.tracks.empty())
-    throw InputError(fmt::format(
-        "no text was read in {} frame sets of the same place (of {} readings): no map",
-        options.consensus.min_frame_sets, sightings.size()));
+    throw InputError(
+        fmt::format("no text was read in {} frame sets of the same place (of {} readings): no map",
+                    options.consensus.min_frame_sets, sightings.size()));
   for (const std::string& text : build.consensus.duplicates)
     build.problems.push_back(fmt::format(
         "'{}' was read at two places far apart (painted twice, or a misread): left out", text));
@@ -103,8 +103,7 @@ MapBuild estimateMap(const std::vector<const geometry::Rig*>& rigs,
       if (!build.has_uncertainty) build.problems.push_back("no landmark sigmas: " + why);
       break;
     }
-    if (keep.empty())
-      throw InputError("no text read fits a flat text on the floor: no map");
+    if (keep.empty()) throw InputError("no text read fits a flat text on the floor: no map");
     std::vector<TextTrack> tracks;
     build.landmarks.clear();
     for (size_t t : keep) {
@@ -156,16 +155,16 @@ MapBuild buildMap(const std::vector<const io::Sequence*>& drives, ocr::TextSpott
         if (s.drive != d) continue;
         if (s.frame >= drive.timestamps().size() || s.camera < 0 ||
             static_cast<size_t>(s.camera) >= drive.rig().cameras.size())
-          throw InputError(fmt::format(
-              "sightings of drive {}: frame set {} camera {} is not in the drive", drive.dir(),
-              s.frame, s.camera));
+          throw InputError(
+              fmt::format("sightings of drive {}: frame set {} camera {} is not in the drive",
+                          drive.dir(), s.frame, s.camera));
         read.push_back(s);
       }
     } else if (spotter) {
-      read = readDrive(drive, d, *spotter, options.reading, stats[d],
-                       [&](size_t done, size_t total) {
-                         if (progress) progress(d, done, total);
-                       });
+      read =
+          readDrive(drive, d, *spotter, options.reading, stats[d], [&](size_t done, size_t total) {
+            if (progress) progress(d, done, total);
+          });
     }
     if (read.empty())
       throw InputError(fmt::format("drive {}: no parking number was read in {} frame sets",

@@ -68,7 +68,7 @@ MapBuild buildMap(const std::vector<const io::Sequence*>& drives, ocr::TextSpott
 // (all in one frame): what buildMap does after reading. Throws InputError when no text
 // makes a landmark.
 MapBuild estimateMap(const std::vector<const geometry::Rig*>& rigs,
-                     const std::vector<SurveyPoses>& poses,
-                     const std::vector<Sighting>& sightings, const MapBuildOptions& options);
+                     const std::vector<SurveyPoses>& poses, const std::vector<Sighting>& sightings,
+                     const MapBuildOptions& options);
 
 }  // namespace parkloc::mapping

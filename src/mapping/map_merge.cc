@@ -48,9 +48,9 @@ MapMerge mergeMaps(const map::HdMap& existing, std::vector<LandmarkEstimate>& bu
     for (size_t m = 0; m < matches.size(); ++m) {
       if (!inlier[m]) continue;
       const LandmarkEstimate& b = built[matches[m].first];
-      const double d = (fit->apply({b.parameters[kX], b.parameters[kY]}) -
-                        matches[m].second->position.head<2>())
-                           .norm();
+      const double d =
+          (fit->apply({b.parameters[kX], b.parameters[kY]}) - matches[m].second->position.head<2>())
+              .norm();
       if (d > worst) {
         worst = d;
         drop = m;
@@ -77,21 +77,21 @@ MapMerge mergeMaps(const map::HdMap& existing, std::vector<LandmarkEstimate>& bu
       continue;
     }
     LandmarkEstimate& b = built[it->second];
-    const double d = (Eigen::Vector2d(b.parameters[kX], b.parameters[kY]) - e.position.head<2>())
-                         .norm();
+    const double d =
+        (Eigen::Vector2d(b.parameters[kX], b.parameters[kY]) - e.position.head<2>()).norm();
     map::Landmark merged = e;
     if (d > options.moved_threshold_m) {
       b.moved_m = d;
       out.moved.push_back(b.text);
-      const map::Landmark now = b.toLandmark(e.level);
-      merged.position.head<2>() = now.position.head<2>();
-      merged.heading = now.heading;
-      merged.accuracy = now.accuracy;
+      const map::Landmark seen = b.toLandmark(e.level);
+      merged.position.head<2>() = seen.position.head<2>();
+      merged.heading = seen.heading;
+      merged.accuracy = seen.accuracy;
     } else {
       ++out.confirmed;
       for (int k = 0; k < 2; ++k)
-        merged.position[k] = fuse(e.position[k], e.accuracy.position_sigma, b.parameters[k],
-                                  b.position_sigma);
+        merged.position[k] =
+            fuse(e.position[k], e.accuracy.position_sigma, b.parameters[k], b.position_sigma);
     }
     out.landmarks.push_back(merged);
   }

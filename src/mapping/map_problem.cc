@@ -22,8 +22,8 @@ OdometrySigmas odometrySigmas(const geometry::Pose2& motion, const EstimationOpt
 }  // namespace
 
 MapProblem::MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEstimate>& landmarks,
-                       const std::vector<Sighting>& sightings,
-                       const std::vector<TextTrack>& tracks, const EstimationOptions& options)
+                       const std::vector<Sighting>& sightings, const std::vector<TextTrack>& tracks,
+                       const EstimationOptions& options)
     : drives_(drives), landmarks_(landmarks), options_(options) {
   ceres::Problem::Options problem_options;
   // Factors are owned by the problem; the loss is shared by all corners and owned here.
@@ -34,9 +34,9 @@ MapProblem::MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEsti
   for (DriveState& drive : drives_) {
     for (auto& pose : drive.poses) problem_->AddParameterBlock(pose.data(), 3);
     for (size_t i = 0; i + 1 < drive.poses.size() && i < drive.motion.size(); ++i) {
-      problem_->AddResidualBlock(OdometryFactor::create(drive.motion[i],
-                                                        odometrySigmas(drive.motion[i], options)),
-                                 nullptr, drive.poses[i].data(), drive.poses[i + 1].data());
+      problem_->AddResidualBlock(
+          OdometryFactor::create(drive.motion[i], odometrySigmas(drive.motion[i], options)),
+          nullptr, drive.poses[i].data(), drive.poses[i + 1].data());
       ++odometry_factors_;
     }
   }
@@ -55,8 +55,8 @@ MapProblem::MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEsti
       const geometry::RigCamera& camera = drive.rig->cameras[static_cast<size_t>(s.camera)];
       for (int k = 0; k < 4; ++k) {
         auto* factor = new CornerFactor(camera, k, s.pixels[k], options.pixel_sigma);
-        const ceres::ResidualBlockId id = problem_->AddResidualBlock(
-            factor, loss_.get(), drive.poses[s.frame].data(), landmark);
+        const ceres::ResidualBlockId id =
+            problem_->AddResidualBlock(factor, loss_.get(), drive.poses[s.frame].data(), landmark);
         corners_.push_back({t, id});
       }
     }

@@ -23,7 +23,7 @@
 namespace ceres {
 class Problem;
 class LossFunction;
-}
+}  // namespace ceres
 
 namespace parkloc::mapping {
 

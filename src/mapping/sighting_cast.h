@@ -14,8 +14,9 @@
 namespace parkloc::mapping {
 
 struct CastSighting {
+  // Map x, y in reading order.
   std::array<Eigen::Vector2d, 4> corners{Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
-                                         Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};  // map x, y, reading order
+                                         Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   double range_m = 0.0;  // from the vehicle's origin to the text's centre
 };

@@ -47,7 +47,8 @@ std::vector<Sighting> readDrive(const io::Sequence& drive, size_t drive_index,
     }
     if (progress) progress(frame + 1, frames);
   }
-  stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  stats.seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return sightings;
 }
 

@@ -34,11 +34,11 @@ struct ReadingOptions {
 };
 
 struct ReadingStats {
-  size_t frame_sets = 0;     // frame sets read
-  size_t images = 0;         // camera images spotted
+  size_t frame_sets = 0;  // frame sets read
+  size_t images = 0;      // camera images spotted
   size_t missing_images = 0;
-  size_t instances = 0;      // text instances the spotter returned
-  double seconds = 0.0;      // wall time of the spotting
+  size_t instances = 0;  // text instances the spotter returned
+  double seconds = 0.0;  // wall time of the spotting
 };
 
 // Sightings of parking numbers (painted on the floor) in `drive`. `progress` (may be empty)

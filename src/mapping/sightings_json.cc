@@ -15,9 +15,12 @@ void saveSightings(const std::vector<Sighting>& sightings, const std::string& pa
   for (const Sighting& s : sightings) {
     nlohmann::json pixels = nlohmann::json::array();
     for (const auto& p : s.pixels) pixels.push_back({p.x(), p.y()});
-    out << nlohmann::json{{"drive", s.drive},   {"frame", s.frame},
-                          {"camera", s.camera}, {"text", s.text},
-                          {"class", map::toString(s.cls)}, {"pixels", pixels},
+    out << nlohmann::json{{"drive", s.drive},
+                          {"frame", s.frame},
+                          {"camera", s.camera},
+                          {"text", s.text},
+                          {"class", map::toString(s.cls)},
+                          {"pixels", pixels},
                           {"score", s.recognition_score}}
                .dump()
         << "\n";

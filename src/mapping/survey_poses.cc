@@ -21,10 +21,10 @@ SurveyPoses deadReckon(const std::vector<OdometrySample>& odometry,
         drive));
   if (odometry.front().timestamp > timestamps.front() + gap_s ||
       odometry.back().timestamp < timestamps.back() - gap_s)
-    throw InputError(fmt::format(
-        "drive {}: odometry covers {:.2f}..{:.2f} s, the frame sets {:.2f}..{:.2f} s", drive,
-        odometry.front().timestamp, odometry.back().timestamp, timestamps.front(),
-        timestamps.back()));
+    throw InputError(
+        fmt::format("drive {}: odometry covers {:.2f}..{:.2f} s, the frame sets {:.2f}..{:.2f} s",
+                    drive, odometry.front().timestamp, odometry.back().timestamp,
+                    timestamps.front(), timestamps.back()));
   SurveyPoses poses;
   poses.timestamps = timestamps;
   poses.map_from_vehicle.push_back(geometry::Pose2());
@@ -41,11 +41,10 @@ SurveyPoses deadReckon(const std::vector<OdometrySample>& odometry,
         arriving.push_back(s);
     }
     if (!held) held = odometry.front();
-    const std::optional<geometry::Pose2> step =
-        localize::integrateOdometry(held, arriving, t0, t1);
+    const std::optional<geometry::Pose2> step = localize::integrateOdometry(held, arriving, t0, t1);
     if (!step)
-      throw InputError(fmt::format("drive {}: frame sets at {:.6f} and {:.6f} out of order",
-                                   drive, t0, t1));
+      throw InputError(
+          fmt::format("drive {}: frame sets at {:.6f} and {:.6f} out of order", drive, t0, t1));
     poses.motion.push_back(*step);
     poses.map_from_vehicle.push_back(poses.map_from_vehicle.back() * *step);
     poses.distance_m += step->translation().norm();

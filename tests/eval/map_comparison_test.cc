@@ -43,8 +43,7 @@ TEST(MapComparison, AlignsTheBuiltFrameAndMeasuresEachError) {
     built.push_back(b);
   }
   built.push_back(number("Q9", 0.0, 0.0));
-  const MapComparison c =
-      compareMaps(map::HdMap(built), truth, "", /*legible_frames=*/{}, {});
+  const MapComparison c = compareMaps(map::HdMap(built), truth, "", /*legible_frames=*/{}, {});
   EXPECT_EQ(c.level, "B1");
   ASSERT_TRUE(c.fit);
   EXPECT_EQ(c.position_m.count, 4u);

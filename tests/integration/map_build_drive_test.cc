@@ -47,8 +47,8 @@ TEST(MapBuildDrive, BuildsTheMapOfAShortTourWithinCentimetres) {
 
   const io::Sequence truth(drive.string());
   const eval::MapComparison c =
-      eval::compareMaps(map::HdMap(landmarks), truth.map(), "B1",
-                        eval::legibleFrameSets(truth), eval::MapComparisonOptions{});
+      eval::compareMaps(map::HdMap(landmarks), truth.map(), "B1", eval::legibleFrameSets(truth),
+                        eval::MapComparisonOptions{});
   fs::remove_all(dir);
   ASSERT_TRUE(c.fit);
   EXPECT_GE(c.position_m.count, 3u);

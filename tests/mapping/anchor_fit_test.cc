@@ -26,8 +26,9 @@ TEST(AnchorFit, ASimilarityPutsTheMapIntoTheSurveyedFrame) {
   const geometry::Pose2 frame(10.0, 20.0, 0.5);
   std::vector<io::Anchor> anchors;
   for (int i : {0, 2, 3})
-    anchors.push_back({built[i].text, frame * Eigen::Vector2d(1.03 * Eigen::Vector2d(
-                                               built[i].parameters[kX], built[i].parameters[kY]))});
+    anchors.push_back(
+        {built[i].text, frame * Eigen::Vector2d(1.03 * Eigen::Vector2d(built[i].parameters[kX],
+                                                                       built[i].parameters[kY]))});
   anchors.push_back({"NOT-BUILT", {0.0, 0.0}});
   const AnchorFit fit = fitAnchors(built, anchors, /*with_scale=*/true);
   EXPECT_NEAR(fit.fit.scale, 1.03, 1e-9);

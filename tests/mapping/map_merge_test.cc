@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 
 #include "common/error.h"
 
@@ -54,11 +55,11 @@ TEST(MapMerge, ConfirmsMovesAndAddsInTheExistingFrame) {
   EXPECT_EQ(merge.added[0], "105");
   EXPECT_EQ(merge.kept_unseen, 1);
   ASSERT_EQ(merge.landmarks.size(), 6u);
-  for (const map::Landmark& l : merge.landmarks) {
-    if (l.text == "103") EXPECT_NEAR(l.position.x(), 7.5 + 0.6, 1e-6);
-    if (l.text == "105") EXPECT_NEAR(l.position.x(), 12.5, 1e-6);
-    if (l.text == "102") EXPECT_NEAR(l.position.x(), 5.0, 1e-6);
-  }
+  std::map<std::string, double> x;
+  for (const map::Landmark& l : merge.landmarks) x[l.text] = l.position.x();
+  EXPECT_NEAR(x["103"], 7.5 + 0.6, 1e-6);
+  EXPECT_NEAR(x["105"], 12.5, 1e-6);
+  EXPECT_NEAR(x["102"], 5.0, 1e-6);
   EXPECT_NO_THROW(map::HdMap(merge.landmarks));
 }
 

@@ -65,8 +65,9 @@ WorstError worstError(const MapBuild& build, const testing::SyntheticSurvey& sur
       if (t.text != l.text) continue;
       w.position = std::max(w.position, std::hypot(l.parameters[kX] - t.parameters[kX],
                                                    l.parameters[kY] - t.parameters[kY]));
-      w.heading = std::max(
-          w.heading, std::fabs(geometry::wrapAngle(l.parameters[kHeading] - t.parameters[kHeading])));
+      w.heading =
+          std::max(w.heading,
+                   std::fabs(geometry::wrapAngle(l.parameters[kHeading] - t.parameters[kHeading])));
       w.size = std::max({w.size, std::fabs(l.parameters[kWidth] - t.parameters[kWidth]),
                          std::fabs(l.parameters[kHeight] - t.parameters[kHeight])});
     }
@@ -122,9 +123,9 @@ TEST(MapProblem, RobustLossKeepsAMisplacedCornerFromMovingTheLandmark) {
   for (const LandmarkEstimate& l : build.landmarks) {
     for (const auto& t : survey.truth)
       if (t.text == l.text) {
-        EXPECT_LT(std::hypot(l.parameters[kX] - t.parameters[kX],
-                             l.parameters[kY] - t.parameters[kY]),
-                  0.01)
+        EXPECT_LT(
+            std::hypot(l.parameters[kX] - t.parameters[kX], l.parameters[kY] - t.parameters[kY]),
+            0.01)
             << l.text;
         EXPECT_NEAR(l.parameters[kWidth], t.parameters[kWidth], 0.01) << l.text;
       }

@@ -29,7 +29,8 @@ inline SyntheticSurvey makeSurvey(int frames = 40, double step_m = 0.25) {
                     left ? M_PI : 0.0, 0.9, 0.45};
     s.truth.push_back(l);
   }
-  for (int f = 0; f < frames; ++f) s.poses.emplace_back(step_m * f, 0.05 * std::sin(0.2 * f), 0.02 * f / frames);
+  for (int f = 0; f < frames; ++f)
+    s.poses.emplace_back(step_m * f, 0.05 * std::sin(0.2 * f), 0.02 * f / frames);
   for (int f = 0; f < frames; ++f)
     for (size_t c = 0; c < s.rig.cameras.size(); ++c)
       for (const LandmarkEstimate& l : s.truth) {
@@ -46,8 +47,8 @@ inline SyntheticSurvey makeSurvey(int frames = 40, double step_m = 0.25) {
               s.rig.cameras[c], s.poses[f],
               Eigen::Vector3d(corners[k][0], corners[k][1], corners[k][2]));
           seen = p && s.rig.cameras[c].model.inImage(p->pixel, 20.0) &&
-                 (Eigen::Vector2d(corners[k][0], corners[k][1]) - s.poses[f].translation())
-                         .norm() < 7.0;
+                 (Eigen::Vector2d(corners[k][0], corners[k][1]) - s.poses[f].translation()).norm() <
+                     7.0;
           if (seen) sighting.pixels[k] = p->pixel;
         }
         if (seen) s.sightings.push_back(sighting);

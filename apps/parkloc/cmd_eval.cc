@@ -9,6 +9,7 @@
 
 #include "apps/parkloc/command.h"
 #include "apps/parkloc/config_args.h"
+#include "apps/parkloc/map_commands.h"
 #include "apps/parkloc/progress_line.h"
 #include "common/error.h"
 #include "eval/dataset.h"
@@ -183,8 +184,9 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   ocr_args->config.addTo(ocr_cmd);
   ocr_cmd->callback([ocr_args] { runEvalOcr(*ocr_args); });
 
-  cmd->callback([args, ocr_cmd] {
-    if (ocr_cmd->parsed()) return;
+  CLI::App* map_cmd = app::addEvalMap(*cmd);
+  cmd->callback([args, ocr_cmd, map_cmd] {
+    if (ocr_cmd->parsed() || map_cmd->parsed()) return;
     if (args->dataset.empty()) throw CLI::RequiredError("dataset");
     args->command_line =
         fmt::format("parkloc eval {} --split {}{}{}{}{}{}", args->dataset, args->split,

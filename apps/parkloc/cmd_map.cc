@@ -3,11 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "apps/parkloc/command.h"
+#include "apps/parkloc/map_commands.h"
 #include "io/map_geojson.h"
 
 namespace {
@@ -100,6 +101,7 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
   auto path = std::make_shared<std::string>();
   check->add_option("FILE", *path, "GeoJSON FeatureCollection of text landmarks")->required();
   check->callback([path] { printMap(*path); });
+  parkloc::app::addMapBuild(*map);
 });
 
 }  // namespace

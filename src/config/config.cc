@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "config/localize_options.h"
+#include "config/mapping_options.h"
 #include "config/ocr_options.h"
 #include "config/yaml_reader.h"
 #include "config/yaml_writer.h"
@@ -46,6 +47,8 @@ void describe(OptionVisitor& v, Config& c) {
             [&] { describe(v, c.spotter); });
   v.section("pipeline", "the localization, one section per stage, docs/LOCALIZATION.md",
             [&] { describe(v, c.pipeline); });
+  v.section("map_build", "the map builder (parkloc map build), docs/MAPPING.md",
+            [&] { describe(v, c.map_build); });
 }
 
 std::string inModelDir(const std::string& file, const std::string& dir) {

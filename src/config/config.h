@@ -6,6 +6,7 @@
 #include <string>
 
 #include "localize/pipeline.h"
+#include "mapping/map_builder.h"
 #include "ocr/ppocr/pp_ocr_model_paths.h"
 #include "ocr/ppocr/pp_ocr_spotter.h"
 
@@ -26,6 +27,7 @@ struct Config {
   ModelOptions models;
   ocr::PpOcrOptions spotter;  // its `models` paths come from `models` above (spotterOptions)
   localize::PipelineOptions pipeline;
+  mapping::MapBuildOptions map_build;
 };
 
 // The defaults overlaid with the YAML file at `path`; throws InputError naming the file and

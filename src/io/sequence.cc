@@ -68,8 +68,10 @@ std::string readText(const fs::path& p) {
 std::string timestampStem(double timestamp) { return fmt::format("{:.6f}", timestamp); }
 
 Sequence::Sequence(const std::string& dir, const std::string& calib_path,
-                   const std::string& map_path, const std::string& odometry_path)
+                   const std::string& map_path, const std::string& odometry_path,
+                   SequenceContents contents)
     : dir_(dir) {
+  const bool truth = contents == SequenceContents::kAll;
   const fs::path root(dir);
   if (!fs::is_directory(root)) throw InputError(fmt::format("sequence {}: not a directory", dir));
 
@@ -78,21 +80,22 @@ Sequence::Sequence(const std::string& dir, const std::string& calib_path,
     throw InputError(fmt::format("sequence {}: calibration {} not found", dir, calib.string()));
   rig_ = loadCalibration(calib.string());
 
-  const fs::path map_file = map_path.empty() ? root / "map.geojson" : fs::path(map_path);
-  if (!fs::is_regular_file(map_file))
-    throw InputError(fmt::format("sequence {}: map {} not found", dir, map_file.string()));
-  map_ = loadMap(map_file.string());
-
-  if (const fs::path poses = root / "poses.tum"; fs::is_regular_file(poses))
-    ground_truth_ = loadTum(poses.string());
-  if (const fs::path levels = root / "levels.csv"; fs::is_regular_file(levels))
-    level_truth_ = loadLevels(levels.string());
+  if (truth) {
+    const fs::path map_file = map_path.empty() ? root / "map.geojson" : fs::path(map_path);
+    if (!fs::is_regular_file(map_file))
+      throw InputError(fmt::format("sequence {}: map {} not found", dir, map_file.string()));
+    map_ = loadMap(map_file.string());
+    if (const fs::path poses = root / "poses.tum"; fs::is_regular_file(poses))
+      ground_truth_ = loadTum(poses.string());
+    if (const fs::path levels = root / "levels.csv"; fs::is_regular_file(levels))
+      level_truth_ = loadLevels(levels.string());
+  }
   const fs::path odometry = odometry_path.empty() ? root / "odometry.csv" : fs::path(odometry_path);
   if (fs::is_regular_file(odometry))
     odometry_ = loadOdometry(odometry.string());
   else if (!odometry_path.empty())
     throw InputError(fmt::format("sequence {}: odometry {} not found", dir, odometry.string()));
-  if (const fs::path meta = root / "meta.json"; fs::is_regular_file(meta))
+  if (const fs::path meta = root / "meta.json"; truth && fs::is_regular_file(meta))
     meta_json_ = readText(meta);
 
   // Per camera, its images: files named by their capture time, or a video with its times.

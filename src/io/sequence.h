@@ -27,12 +27,18 @@ namespace parkloc::io {
 
 std::string timestampStem(double timestamp);  // 12.35 -> "12.350000"
 
+// What a Sequence reads. kSensors: only what the vehicle records (calib.yaml, odometry.csv,
+// images): an estimator that must not see the truth (the map builder) reads a drive so.
+enum class SequenceContents { kAll, kSensors };
+
 class Sequence {
  public:
   // Reads calib.yaml and map.geojson (required, throws InputError), the optional files, and
-  // lists the images. Paths may be overridden (e.g. --calib / --map on the CLI).
+  // lists the images. Paths may be overridden (e.g. --calib / --map on the CLI). With
+  // kSensors, map.geojson, poses.tum, levels.csv and meta.json are not read (map() is empty).
   explicit Sequence(const std::string& dir, const std::string& calib_path = "",
-                    const std::string& map_path = "", const std::string& odometry_path = "");
+                    const std::string& map_path = "", const std::string& odometry_path = "",
+                    SequenceContents contents = SequenceContents::kAll);
 
   const std::string& dir() const { return dir_; }
   const geometry::Rig& rig() const { return rig_; }

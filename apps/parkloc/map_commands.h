@@ -1,0 +1,11 @@
+#pragma once
+// Subcommands that join a group another file creates: `map build` (cmd_map_build.cc) under
+// `map`, `eval map` (cmd_eval_map.cc) under `eval`.
+#include <CLI/CLI.hpp>
+
+namespace parkloc::app {
+
+CLI::App* addMapBuild(CLI::App& map);
+CLI::App* addEvalMap(CLI::App& eval);
+
+}  // namespace parkloc::app

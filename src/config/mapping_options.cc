@@ -1,0 +1,56 @@
+#include "config/mapping_options.h"
+
+namespace parkloc::config {
+namespace {
+
+void describe(OptionVisitor& v, mapping::ReadingOptions& o) {
+  v.value("frame_step", o.frame_step, "read every this many frame sets (1: all)");
+  v.value("min_recognition_score", o.min_recognition_score,
+          "a less probable reading is no sighting: it would only be outvoted");
+}
+
+void describe(OptionVisitor& v, mapping::ConsensusOptions& o) {
+  v.value("place_radius_m", o.place_radius_m,
+          "sightings cast within this of a place are at it (under the 2.3 m number spacing)");
+  v.value("max_range_m", o.max_range_m,
+          "sightings cast from further are left out: the cast's error grows with range");
+  v.value("min_frame_sets", o.min_frame_sets,
+          "a landmark's reading was seen in at least this many frame sets");
+  v.value("min_agreement", o.min_agreement,
+          "... and in this share of the frame sets that read anything at its place ...");
+  v.value("min_margin", o.min_margin,
+          "... and in this many times the runner-up reading's frame sets (else ambiguous)");
+  v.value("loop_radius_m", o.loop_radius_m,
+          "two places of one reading this close are one text seen again (a loop)");
+}
+
+void describe(OptionVisitor& v, mapping::EstimationOptions& o) {
+  v.value("pixel_sigma", o.pixel_sigma, "corner noise of the spotter, pixels (1 sigma)");
+  v.value("robust_scale", o.robust_scale,
+          "Cauchy loss scale in sigmas: a corner off by much more is mostly ignored");
+  v.value("odometry_min_sigma_m", o.odometry_min_sigma_m,
+          "odometry position noise between frame sets, floor (m, 1 sigma)");
+  v.value("odometry_sigma_per_m", o.odometry_sigma_per_m,
+          "... and its share of the distance (wheel scale, slip)");
+  v.value("odometry_min_yaw_sigma_rad", o.odometry_min_yaw_sigma_rad,
+          "odometry yaw noise between frame sets, floor (rad)");
+  v.value("odometry_yaw_sigma_per_m", o.odometry_yaw_sigma_per_m,
+          "... and per metre driven (rad/m; gyro noise and bias)");
+  v.value("max_iterations", o.max_iterations, "Ceres iterations at most");
+  v.value("threads", o.threads, "Ceres threads");
+}
+
+}  // namespace
+
+void describe(OptionVisitor& v, mapping::MapBuildOptions& o) {
+  v.section("reading", "what is read on every frame set", [&] { describe(v, o.reading); });
+  v.section("consensus", "which sightings are one text, and what it says",
+            [&] { describe(v, o.consensus); });
+  v.section("estimation", "poses and landmarks by Ceres", [&] { describe(v, o.estimation); });
+  v.value("odometry_scale_tolerance", o.odometry_scale_tolerance,
+          "beyond this relative distance difference the odometry disagrees with the cameras");
+  v.value("max_rms_px", o.max_rms_px,
+          "a landmark whose corners reproject worse (RMS, px) is no floor text: left out");
+}
+
+}  // namespace parkloc::config

@@ -1,0 +1,136 @@
+#include "mapping/consensus.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <utility>
+
+namespace parkloc::mapping {
+namespace {
+
+// Sightings near one another on the floor, whatever they read.
+struct Place {
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  std::vector<size_t> members;
+  Eigen::Vector2d centre() const { return sum / static_cast<double>(members.size()); }
+};
+
+using FrameKey = std::pair<size_t, size_t>;  // (drive, frame set)
+
+int distinctFrameSets(const std::vector<Sighting>& sightings, const std::vector<size_t>& members) {
+  std::set<FrameKey> frames;
+  for (size_t i : members) frames.insert({sightings[i].drive, sightings[i].frame});
+  return static_cast<int>(frames.size());
+}
+
+std::vector<Place> groupByPlace(const std::vector<std::optional<CastSighting>>& cast,
+                                const std::vector<size_t>& placed, double radius) {
+  std::vector<Place> places;
+  for (size_t i : placed) {
+    const Eigen::Vector2d& c = cast[i]->centre;
+    Place* nearest = nullptr;
+    double best = radius;
+    for (Place& p : places) {
+      const double d = (p.centre() - c).norm();
+      if (d <= best) {
+        best = d;
+        nearest = &p;
+      }
+    }
+    if (!nearest) nearest = &places.emplace_back();
+    nearest->sum += c;
+    nearest->members.push_back(i);
+  }
+  return places;
+}
+
+}  // namespace
+
+Consensus formConsensus(const std::vector<Sighting>& sightings,
+                        const std::vector<std::optional<CastSighting>>& cast,
+                        const ConsensusOptions& options) {
+  Consensus out;
+  std::vector<size_t> placed;
+  for (size_t i = 0; i < sightings.size(); ++i) {
+    if (i < cast.size() && cast[i] && cast[i]->range_m <= options.max_range_m)
+      placed.push_back(i);
+    else
+      ++out.unplaced;
+  }
+  std::vector<TextTrack> candidates;
+  for (const Place& place : groupByPlace(cast, placed, options.place_radius_m)) {
+    std::map<std::string, std::vector<size_t>> by_text;
+    for (size_t i : place.members) by_text[sightings[i].text].push_back(i);
+    // The reading of the most frame sets; ties to the more confident reading.
+    const std::vector<size_t>* winner = nullptr;
+    std::pair<int, double> best{-1, 0.0};
+    for (const auto& [text, members] : by_text) {
+      double score = 0.0;
+      for (size_t i : members) score += sightings[i].recognition_score;
+      const std::pair<int, double> key{distinctFrameSets(sightings, members), score};
+      if (key > best) {
+        best = key;
+        winner = &members;
+      }
+    }
+    // A reading that is part of the winner ("28" of "286") is the same text cut by the
+    // image's border: it neither competes with the winner nor counts against its agreement.
+    const std::string& winning_text = sightings[winner->front()].text;
+    int runner_up = 0;
+    std::vector<size_t> competing = *winner;
+    for (const auto& [text, members] : by_text) {
+      if (&members == winner || winning_text.find(text) != std::string::npos) continue;
+      runner_up = std::max(runner_up, distinctFrameSets(sightings, members));
+      competing.insert(competing.end(), members.begin(), members.end());
+    }
+    const int all_frames = distinctFrameSets(sightings, competing);
+    const int misreads = static_cast<int>(place.members.size() - winner->size());
+    out.misreads += static_cast<size_t>(misreads);
+    if (best.first < options.min_frame_sets ||
+        best.first < options.min_agreement * static_cast<double>(all_frames) ||
+        best.first < options.min_margin * runner_up) {
+      ++out.weak_places;
+      continue;
+    }
+    TextTrack track;
+    track.text = sightings[winner->front()].text;
+    track.cls = sightings[winner->front()].cls;
+    track.sightings = *winner;
+    track.frame_sets = best.first;
+    track.misreads = misreads;
+    for (size_t i : *winner) track.place += cast[i]->centre;
+    track.place /= static_cast<double>(winner->size());
+    candidates.push_back(std::move(track));
+  }
+
+  // One reading at several places: a loop when they are near, else a duplicate.
+  std::map<std::string, std::vector<size_t>> by_text;
+  for (size_t t = 0; t < candidates.size(); ++t) by_text[candidates[t].text].push_back(t);
+  for (auto& [text, indices] : by_text) {
+    TextTrack merged = candidates[indices.front()];
+    bool duplicate = false;
+    for (size_t k = 1; k < indices.size(); ++k) {
+      const TextTrack& other = candidates[indices[k]];
+      if ((other.place - merged.place).norm() > options.loop_radius_m) {
+        duplicate = true;
+        break;
+      }
+      const double n = static_cast<double>(merged.sightings.size());
+      const double m = static_cast<double>(other.sightings.size());
+      merged.place = (n * merged.place + m * other.place) / (n + m);
+      merged.sightings.insert(merged.sightings.end(), other.sightings.begin(),
+                              other.sightings.end());
+      merged.misreads += other.misreads;
+      ++out.loops;
+    }
+    if (duplicate) {
+      out.duplicates.push_back(text);
+      continue;
+    }
+    merged.frame_sets = distinctFrameSets(sightings, merged.sightings);
+    out.tracks.push_back(std::move(merged));
+  }
+  return out;
+}
+
+}  // namespace parkloc::mapping

@@ -1,0 +1,66 @@
+#pragma once
+// Stage 2 of map building, the consensus reading: which sightings are one text, and what it
+// says. Sightings are grouped by place (their cast centres in the dead-reckoned frame), and in
+// each place the reading seen in the most frame sets wins: a misread in one frame set (a 6 for
+// an 8, a digit lost at the image border) is outvoted and dropped, never a landmark of its own.
+// A place makes a landmark only when its reading was seen in enough frame sets and agrees
+// with most of what was read there. Two places with one reading: near each other they are the
+// same text seen again after a loop (merged; this closes the loop in the estimation), far
+// apart they are a number painted twice or a misread that won a place, and neither is kept.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "map/landmark.h"
+#include "mapping/sighting_cast.h"
+#include "mapping/sightings.h"
+
+namespace parkloc::mapping {
+
+struct ConsensusOptions {
+  // Sightings whose cast centres lie within this of a place's centre are at that place: well
+  // under the spacing of parking numbers (2.3 m or more), well over the cast's error at range.
+  double place_radius_m = 1.0;
+  // Sightings cast from further than this are left out: the floor's footprint of a pixel
+  // grows with range, and with it the cast's error.
+  double max_range_m = 9.0;
+  // A landmark's reading was seen in at least this many frame sets (the targets' legibility
+  // bar) ...
+  int min_frame_sets = 3;
+  // ... and in at least this share of the frame sets that read anything at its place ...
+  double min_agreement = 0.5;
+  // ... and in this many times the frame sets of the runner-up reading: a place where two
+  // readings compete (a 2 read as 7 in a font that blurs them) is left out rather than
+  // guessed.
+  double min_margin = 2.0;
+  // Two places with the same winning reading this close are one text seen twice (a loop).
+  double loop_radius_m = 4.0;
+};
+
+// One text of the map to be: the sightings that agree on its reading.
+struct TextTrack {
+  std::string text;
+  map::TextClass cls = map::TextClass::kParkingNumber;
+  std::vector<size_t> sightings;  // indices into the sightings, those that read `text`
+  int frame_sets = 0;             // distinct (drive, frame set) among them
+  int misreads = 0;               // sightings at its place that read something else
+  Eigen::Vector2d place = Eigen::Vector2d::Zero();
+};
+
+struct Consensus {
+  std::vector<TextTrack> tracks;
+  size_t unplaced = 0;     // sightings whose rays missed the floor or beyond max_range_m
+  size_t misreads = 0;     // sightings outvoted at their place
+  size_t weak_places = 0;  // places whose reading was seen too rarely or disagreed too much
+  size_t loops = 0;        // places merged with another of the same reading
+  // Readings that won two places far apart: left out of the map.
+  std::vector<std::string> duplicates;
+};
+
+// `cast[i]` is sightings[i] cast through its drive's poses (empty: unplaced); all drives in one
+// frame.
+Consensus formConsensus(const std::vector<Sighting>& sightings,
+                        const std::vector<std::optional<CastSighting>>& cast,
+                        const ConsensusOptions& options);
+
+}  // namespace parkloc::mapping

@@ -1,0 +1,96 @@
+#pragma once
+// Stage 3 of map building, the estimation: the vehicle poses of every frame set and the
+// landmarks (x, y, heading, width, height) as one sparse nonlinear least-squares problem
+// (Ceres Solver). Odometry factors tie consecutive poses; a reprojection factor per corner of
+// every sighting ties a pose to a landmark, under a robust loss so that a corner the detector
+// put on a neighbour's ink or a shadow weighs little. A text seen again after a loop ties the
+// poses of both passes to one landmark: that is the loop closure, with no place recognition
+// needed, since each number is unique on its level.
+//
+// The gauge: the first pose of the first drive is held (the map's origin); anchors move the
+// whole map afterwards (anchor_fit.h).
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/pose.h"
+#include "geometry/rig.h"
+#include "mapping/consensus.h"
+#include "mapping/landmark_estimate.h"
+#include "mapping/sightings.h"
+
+namespace ceres {
+class Problem;
+class LossFunction;
+}  // namespace ceres
+
+namespace parkloc::mapping {
+
+struct EstimationOptions {
+  // Corner noise of the spotter (1 sigma, pixels).
+  double pixel_sigma = 1.0;
+  // Cauchy loss scale on a corner's whitened error (in sigmas): a corner off by much more
+  // is mostly ignored.
+  double robust_scale = 3.0;
+  // Odometry between consecutive frame sets (1 sigma): a floor for standstill plus a share of
+  // the distance (wheel scale, slip), and the same for the yaw (gyro noise and bias).
+  double odometry_min_sigma_m = 0.002;
+  double odometry_sigma_per_m = 0.02;
+  double odometry_min_yaw_sigma_rad = 0.0005;
+  double odometry_yaw_sigma_per_m = 0.005;
+  int max_iterations = 100;
+  int threads = 2;
+};
+
+// One drive's poses (x, y, yaw per frame set, the unknowns) and its odometry between them.
+struct DriveState {
+  const geometry::Rig* rig = nullptr;
+  std::vector<std::array<double, 3>> poses;
+  std::vector<geometry::Pose2> motion;  // motion[i]: pose i+1 in the frame of pose i
+};
+
+struct EstimationSummary {
+  bool converged = false;
+  std::string message;  // the solver's own line on how it ended
+  int iterations = 0;
+  double initial_cost = 0.0;
+  double final_cost = 0.0;
+  double seconds = 0.0;
+  int corner_factors = 0;
+  int odometry_factors = 0;
+};
+
+class MapProblem {
+ public:
+  // `landmarks[t]` is the landmark of `tracks[t]`. The problem refers to `drives` and
+  // `landmarks`: they must outlive it, and the solve writes into them.
+  MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEstimate>& landmarks,
+             const std::vector<Sighting>& sightings, const std::vector<TextTrack>& tracks,
+             const EstimationOptions& options);
+  ~MapProblem();
+
+  EstimationSummary solve();
+  // Fills each landmark's rms_px, median_px and outlier_corners from the corner factors'
+  // errors.
+  void measureResiduals();
+  // Fills each landmark's position_sigma and heading_sigma from the covariance of the
+  // solution; false (and the sigmas left empty) when Ceres cannot compute it (rank
+  // deficient: a landmark seen from one place only along one ray).
+  bool computeUncertainty(std::string* why);
+
+ private:
+  struct CornerBlock {
+    size_t landmark;
+    void* residual_id;
+  };
+  std::vector<DriveState>& drives_;
+  std::vector<LandmarkEstimate>& landmarks_;
+  EstimationOptions options_;
+  std::unique_ptr<ceres::LossFunction> loss_;  // shared by the corner factors
+  std::unique_ptr<ceres::Problem> problem_;
+  std::vector<CornerBlock> corners_;
+  int odometry_factors_ = 0;
+};
+
+}  // namespace parkloc::mapping

@@ -1,0 +1,51 @@
+#pragma once
+// Stage 1 of map building, reading: every text the spotter reads on every frame set of a
+// drive, with no map to guide it (full frames, free reading, the floor view of each camera),
+// as sightings: one camera's reading of one text at one frame set.
+#include <Eigen/Core>
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/sequence.h"
+#include "map/landmark.h"
+#include "ocr/text_spotter.h"
+
+namespace parkloc::mapping {
+
+struct Sighting {
+  size_t drive = 0;  // index of the drive among those the map is built from
+  size_t frame = 0;  // frame set index within the drive
+  int camera = -1;   // index into the drive's Rig::cameras
+  std::string text;
+  map::TextClass cls = map::TextClass::kParkingNumber;
+  // Image corners in reading order (top-left, top-right, bottom-right, bottom-left).
+  std::array<Eigen::Vector2d, 4> pixels;
+  double recognition_score = 0.0;
+};
+
+struct ReadingOptions {
+  // Every this many frame sets is read (1: all); more frame sets, more sightings per text.
+  int frame_step = 1;
+  // A reading less probable than this (the recognizer's calibrated score) is no sighting: it
+  // would only be outvoted in the consensus.
+  double min_recognition_score = 0.5;
+};
+
+struct ReadingStats {
+  size_t frame_sets = 0;  // frame sets read
+  size_t images = 0;      // camera images spotted
+  size_t missing_images = 0;
+  size_t instances = 0;  // text instances the spotter returned
+  double seconds = 0.0;  // wall time of the spotting
+};
+
+// Sightings of parking numbers (painted on the floor) in `drive`. `progress` (may be empty)
+// is told (done, total) frame sets.
+std::vector<Sighting> readDrive(const io::Sequence& drive, size_t drive_index,
+                                ocr::TextSpotter& spotter, const ReadingOptions& options,
+                                ReadingStats& stats,
+                                const std::function<void(size_t, size_t)>& progress = {});
+
+}  // namespace parkloc::mapping

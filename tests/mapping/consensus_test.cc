@@ -1,0 +1,81 @@
+#include "mapping/consensus.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace parkloc::mapping {
+namespace {
+
+// Sightings at given floor places, one per frame set, with what they read.
+struct Readings {
+  std::vector<Sighting> sightings;
+  std::vector<std::optional<CastSighting>> cast;
+
+  void add(const std::string& text, const Eigen::Vector2d& place, size_t frame,
+           double range = 3.0) {
+    Sighting s;
+    s.frame = frame;
+    s.camera = 0;
+    s.text = text;
+    s.recognition_score = 0.9;
+    sightings.push_back(s);
+    CastSighting c;
+    c.centre = place;
+    c.range_m = range;
+    cast.push_back(c);
+  }
+};
+
+const TextTrack* find(const Consensus& c, const std::string& text) {
+  for (const TextTrack& t : c.tracks)
+    if (t.text == text) return &t;
+  return nullptr;
+}
+
+TEST(Consensus, AMisreadIsOutvotedAndMakesNoLandmark) {
+  Readings r;
+  for (size_t f = 0; f < 8; ++f) r.add("B018", {5.0 + 0.05 * f, 2.0}, f);
+  r.add("B016", {5.1, 2.05}, 8);  // a 6 for an 8, once
+  const Consensus c = formConsensus(r.sightings, r.cast, {});
+  ASSERT_EQ(c.tracks.size(), 1u);
+  EXPECT_EQ(c.tracks[0].text, "B018");
+  EXPECT_EQ(c.tracks[0].frame_sets, 8);
+  EXPECT_EQ(c.tracks[0].misreads, 1);
+  EXPECT_EQ(c.misreads, 1u);
+  EXPECT_EQ(find(c, "B016"), nullptr);
+}
+
+TEST(Consensus, TooFewFrameSetsOrTooLittleAgreementMakeNoLandmark) {
+  Readings r;
+  r.add("A1", {0.0, 0.0}, 0);
+  r.add("A1", {0.0, 0.1}, 1);  // two frame sets only
+  for (size_t f = 0; f < 4; ++f) r.add("C7", {10.0, 0.0}, f);
+  for (size_t f = 4; f < 7; ++f) r.add("C1", {10.0, 0.1}, f);  // 4 against 3: no agreement
+  r.add("Z9", {20.0, 0.0}, 0, /*range=*/15.0);                 // cast from too far
+  const Consensus c = formConsensus(r.sightings, r.cast, {});
+  EXPECT_TRUE(c.tracks.empty());
+  EXPECT_EQ(c.weak_places, 2u);
+  EXPECT_EQ(c.unplaced, 1u);
+}
+
+TEST(Consensus, TheSameTextNearByClosesALoopFarAwayIsADuplicate) {
+  Readings r;
+  for (size_t f = 0; f < 4; ++f) r.add("101", {0.0, 0.0}, f);
+  // The same number at the end of a loop, the dead reckoning 1.5 m off by then.
+  for (size_t f = 50; f < 54; ++f) r.add("101", {1.5, 0.0}, f);
+  for (size_t f = 0; f < 4; ++f) r.add("102", {2.5 + 10.0, 0.0}, f);
+  for (size_t f = 10; f < 14; ++f) r.add("102", {30.0, 5.0}, f);
+  const Consensus c = formConsensus(r.sightings, r.cast, {});
+  const TextTrack* loop = find(c, "101");
+  ASSERT_NE(loop, nullptr);
+  EXPECT_EQ(loop->frame_sets, 8);
+  EXPECT_EQ(loop->sightings.size(), 8u);
+  EXPECT_EQ(c.loops, 1u);
+  EXPECT_EQ(find(c, "102"), nullptr);
+  ASSERT_EQ(c.duplicates.size(), 1u);
+  EXPECT_EQ(c.duplicates[0], "102");
+}
+
+}  // namespace
+}  // namespace parkloc::mapping

@@ -1,0 +1,138 @@
+#include "mapping/map_problem.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "mapping/corner_factor.h"
+#include "mapping/map_builder.h"
+#include "synthetic_survey.h"
+
+namespace parkloc::mapping {
+namespace {
+
+using testing::biasedOdometry;
+using testing::makeSurvey;
+
+TEST(CornerFactor, JacobiansMatchCentralDifferences) {
+  const geometry::Rig rig = geometry::defaultRig();
+  const double pose[3] = {0.3, -0.2, 0.1};
+  const double landmark[5] = {3.0, 2.8, 2.5, 0.9, 0.45};
+  for (size_t c = 0; c < rig.cameras.size(); ++c) {
+    for (int k = 0; k < 4; ++k) {
+      const CornerFactor factor(rig.cameras[c], k, Eigen::Vector2d(600, 400), 1.5);
+      const double* params[2] = {pose, landmark};
+      double r[2], J_pose[6], J_landmark[10];
+      double* jacobians[2] = {J_pose, J_landmark};
+      if (!factor.Evaluate(params, r, jacobians)) continue;  // not seen by this camera
+      for (int block = 0; block < 2; ++block) {
+        const int n = block == 0 ? 3 : 5;
+        for (int i = 0; i < n; ++i) {
+          double plus[5], minus[5];
+          const double* base = block == 0 ? pose : landmark;
+          std::copy(base, base + n, plus);
+          std::copy(base, base + n, minus);
+          const double h = 1e-6;
+          plus[i] += h;
+          minus[i] -= h;
+          double rp[2], rm[2];
+          const double* pp[2] = {block == 0 ? plus : pose, block == 1 ? plus : landmark};
+          const double* pm[2] = {block == 0 ? minus : pose, block == 1 ? minus : landmark};
+          ASSERT_TRUE(factor.Evaluate(pp, rp, nullptr));
+          ASSERT_TRUE(factor.Evaluate(pm, rm, nullptr));
+          for (int row = 0; row < 2; ++row) {
+            const double numeric = (rp[row] - rm[row]) / (2 * h);
+            const double analytic = (block == 0 ? J_pose : J_landmark)[row * n + i];
+            EXPECT_NEAR(analytic, numeric, 1e-4 * std::max(1.0, std::fabs(numeric)))
+                << "camera " << c << " corner " << k << " block " << block << " param " << i;
+          }
+        }
+      }
+    }
+  }
+}
+
+// The largest error of the built landmarks against the truth: position (m), heading (rad),
+// size (m).
+struct WorstError {
+  double position = 0.0, heading = 0.0, size = 0.0;
+};
+
+WorstError worstError(const MapBuild& build, const testing::SyntheticSurvey& survey) {
+  WorstError w;
+  for (const LandmarkEstimate& l : build.landmarks)
+    for (const auto& t : survey.truth) {
+      if (t.text != l.text) continue;
+      w.position = std::max(w.position, std::hypot(l.parameters[kX] - t.parameters[kX],
+                                                   l.parameters[kY] - t.parameters[kY]));
+      w.heading =
+          std::max(w.heading,
+                   std::fabs(geometry::wrapAngle(l.parameters[kHeading] - t.parameters[kHeading])));
+      w.size = std::max({w.size, std::fabs(l.parameters[kWidth] - t.parameters[kWidth]),
+                         std::fabs(l.parameters[kHeight] - t.parameters[kHeight])});
+    }
+  return w;
+}
+
+TEST(MapProblem, RecoversKnownLandmarksToTheMillimetre) {
+  const auto survey = makeSurvey();
+  ASSERT_GT(survey.sightings.size(), 100u);
+  // Odometry as the simulator's: 0.5 % long, its yaw rate biased by 0.1 degrees a second.
+  const SurveyPoses odometry = biasedOdometry(survey.poses, 1.005, 0.01 * M_PI / 180.0);
+  const MapBuild build = estimateMap({&survey.rig}, {odometry}, survey.sightings, {});
+  ASSERT_EQ(build.landmarks.size(), survey.truth.size());
+  EXPECT_TRUE(build.estimation.converged) << build.estimation.message;
+  const WorstError w = worstError(build, survey);
+  EXPECT_LT(w.position, 1e-3);
+  EXPECT_LT(w.heading, 1e-3);
+  EXPECT_LT(w.size, 1e-3);
+  for (const LandmarkEstimate& l : build.landmarks) {
+    EXPECT_LT(l.rms_px, 0.05) << l.text;
+    ASSERT_TRUE(l.position_sigma) << l.text;
+    EXPECT_GT(*l.position_sigma, 0.0);
+    EXPECT_LT(*l.position_sigma, 0.05);
+  }
+  EXPECT_TRUE(build.problems.empty());
+}
+
+TEST(MapProblem, SaysWhenTheOdometryDisagreesWithTheCameras) {
+  const auto survey = makeSurvey();
+  // A wheel radius 20 % off.
+  const SurveyPoses odometry = biasedOdometry(survey.poses, 1.2, 0.0);
+  const MapBuild build = estimateMap({&survey.rig}, {odometry}, survey.sightings, {});
+  bool told = false;
+  for (const std::string& p : build.problems) told |= p.find("odometry") != std::string::npos;
+  EXPECT_TRUE(told);
+  // The cameras win: the landmarks stay within centimetres all the same.
+  EXPECT_LT(worstError(build, survey).position, 0.03);
+}
+
+TEST(MapProblem, RobustLossKeepsAMisplacedCornerFromMovingTheLandmark) {
+  auto survey = makeSurvey();
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0.0, 0.5);
+  for (auto& s : survey.sightings)
+    for (auto& p : s.pixels) p += Eigen::Vector2d(noise(rng), noise(rng));
+  // One corner in ten lands on something else, 25 pixels away.
+  for (size_t i = 0; i < survey.sightings.size(); i += 10)
+    survey.sightings[i].pixels[i % 4] += Eigen::Vector2d(25.0, -15.0);
+  const SurveyPoses odometry = biasedOdometry(survey.poses, 1.0, 0.0);
+  const MapBuild build = estimateMap({&survey.rig}, {odometry}, survey.sightings, {});
+  ASSERT_EQ(build.landmarks.size(), survey.truth.size());
+  int outliers = 0;
+  for (const LandmarkEstimate& l : build.landmarks) {
+    for (const auto& t : survey.truth)
+      if (t.text == l.text) {
+        EXPECT_LT(
+            std::hypot(l.parameters[kX] - t.parameters[kX], l.parameters[kY] - t.parameters[kY]),
+            0.01)
+            << l.text;
+        EXPECT_NEAR(l.parameters[kWidth], t.parameters[kWidth], 0.01) << l.text;
+      }
+    outliers += l.outlier_corners;
+  }
+  EXPECT_GT(outliers, 0);
+}
+
+}  // namespace
+}  // namespace parkloc::mapping

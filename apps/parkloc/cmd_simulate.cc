@@ -25,6 +25,8 @@ struct SimulateArgs {
   std::vector<std::string> splits;
   int max_frames = -1;
   int jobs = 1;
+  bool birdseye = false;
+  double birdseye_scale = parkloc::sim::DatasetOptions{}.birdseye_metres_per_pixel;
   bool quiet = false;
 };
 
@@ -39,6 +41,8 @@ void runSimulate(const SimulateArgs& a) {
   options.splits = a.splits;
   options.max_frames = a.max_frames;
   options.jobs = a.jobs;
+  options.birdseye = a.birdseye;
+  options.birdseye_metres_per_pixel = a.birdseye_scale;
   const auto start = std::chrono::steady_clock::now();
   auto bar = [&](size_t done, size_t total) {
     if (a.quiet) return;
@@ -151,6 +155,11 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
                   "same garages as in the whole dataset");
   cmd->add_option("--max-frames", args->max_frames, "Write at most N frame sets per sequence");
   cmd->add_option("--jobs", args->jobs, "Sequences rendered in parallel")->check(CLI::Range(1, 64));
+  cmd->add_flag("--birdseye", args->birdseye,
+                "Also write each frame set's stitched top-down (AVM) image and its labels "
+                "(<sequence>/birdseye/)");
+  cmd->add_option("--birdseye-scale", args->birdseye_scale,
+                  "Metres per pixel of the top-down images");
   cmd->add_flag("--quiet", args->quiet, "No progress bar");
   cmd->callback([args] { runSimulate(*args); });
 });

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "eval/conditions.h"
 
 namespace parkloc::eval {
@@ -131,6 +133,23 @@ Table table3Conditions(const OcrEvaluation& ocr) {
       "Subset", conditionNames(), ocr.by_condition, conditionTitle);
 }
 
+Table table3Appearance(const OcrEvaluation& ocr) {
+  // The looks present: the clean render first, the factors alone, every factor on last.
+  std::vector<std::string> names;
+  const auto& fixed = conditionNames();
+  for (const auto& [name, counts] : ocr.by_condition)
+    if (std::find(fixed.begin(), fixed.end(), name) == fixed.end() && name != "clean" &&
+        name != "realistic")
+      names.push_back(name);
+  if (ocr.by_condition.count("clean")) names.insert(names.begin(), "clean");
+  if (ocr.by_condition.count("realistic")) names.push_back("realistic");
+  return subsetTable(
+      "table3_appearance", "Table 3 by appearance: text spotting per rendered look",
+      "Clean: the plain render; a factor's name: that factor alone on (sim/appearance.h); "
+      "realistic: every factor on.",
+      "Look", names, ocr.by_condition);
+}
+
 Table table3Heights(const OcrEvaluation& ocr) {
   return subsetTable(
       "table3_heights", "Table 3 by size: parking numbers per apparent height",
@@ -220,6 +239,8 @@ std::vector<Table> table3All(const OcrEvaluation& ocr,
   std::vector<Table> out = {table3(ocr, afm), table3Conditions(ocr), table3Heights(ocr),
                             table3Paint(ocr), table3Sight(ocr)};
   if (!ocr.parking_numbers_by_ink.empty()) out.push_back(table3Ink(ocr));
+  const Table looks = table3Appearance(ocr);
+  if (!looks.rows.empty()) out.push_back(looks);
   out.push_back(table3HeightRule(ocr));
   if (ocr.parking_numbers_per_frame_set.numbers > 0) out.push_back(table3FrameSets(ocr));
   if (ocr.parking_numbers_per_drive.numbers > 0) out.push_back(table3Drives(ocr));

@@ -134,12 +134,13 @@ Table table3Conditions(const OcrEvaluation& ocr) {
 }
 
 Table table3Appearance(const OcrEvaluation& ocr) {
-  // The looks present: the clean render first, the factors alone, every factor on last.
+  // The looks present: the clean render first, the factors alone, every factor on last (the
+  // bird's-eye orientations, "avm_*", have their own table).
   std::vector<std::string> names;
   const auto& fixed = conditionNames();
   for (const auto& [name, counts] : ocr.by_condition)
     if (std::find(fixed.begin(), fixed.end(), name) == fixed.end() && name != "clean" &&
-        name != "realistic")
+        name != "realistic" && name.rfind("avm_", 0) != 0)
       names.push_back(name);
   if (ocr.by_condition.count("clean")) names.insert(names.begin(), "clean");
   if (ocr.by_condition.count("realistic")) names.push_back("realistic");
@@ -148,6 +149,15 @@ Table table3Appearance(const OcrEvaluation& ocr) {
       "Clean: the plain render; a factor's name: that factor alone on (sim/appearance.h); "
       "realistic: every factor on.",
       "Look", names, ocr.by_condition);
+}
+
+Table table3BirdsEye(const OcrEvaluation& ocr) {
+  return subsetTable("table3_birdseye",
+                     "Table 3 on bird's-eye images: text spotting per orientation",
+                     "Stitched top-down (AVM) renders, as rendered (forward up) and turned "
+                     "clockwise by 90, 180 and 270 degrees.",
+                     "Orientation", {"avm_rot0", "avm_rot90", "avm_rot180", "avm_rot270"},
+                     ocr.by_condition);
 }
 
 Table table3Heights(const OcrEvaluation& ocr) {

@@ -128,7 +128,44 @@ io::ImageLabels birdsEyeLabels(const Garage& garage, int level, const BirdsEyeSt
     inst.rotation_deg = std::atan2(reading.y(), reading.x()) * 180.0 / M_PI;
     out.instances.push_back(inst);
   }
+  // Text above the floor (plates, pillar labels) is smeared across the floor by the stitching:
+  // where the camera that fills that part of the AVM labels it, it is kept as "not legible", so
+  // that a detector finding the smear is neither rewarded nor counted wrong.
+  for (size_t c = 0; c < camera_labels.size() && c < stitcher.cameraCount(); ++c)
+    for (const io::LabelInstance& seen : camera_labels[c].instances) {
+      bool on_floor = false;
+      for (const TextItem& item : garage.levels.at(level).texts)
+        if (item.landmark.id == seen.landmark_id)
+          on_floor = item.landmark.surface == map::Surface::kGround;
+      if (on_floor) continue;
+      io::LabelInstance inst = seen;
+      bool mapped = true;
+      for (int k = 0; k < 4 && mapped; ++k) {
+        const auto p = stitcher.pixelFromCameraPixel(c, seen.polygon[k]);
+        if (p) inst.polygon[k] = *p;
+        mapped = p.has_value();
+      }
+      if (!mapped) continue;
+      const Eigen::Vector2d centre =
+          0.25 * (inst.polygon[0] + inst.polygon[1] + inst.polygon[2] + inst.polygon[3]);
+      if (stitcher.cameraAt(centre) != static_cast<int>(c)) continue;
+      inst.legible = false;
+      inst.visible_polygon.reset();
+      out.instances.push_back(inst);
+    }
   return out;
+}
+
+std::optional<Eigen::Vector2d> BirdsEyeStitcher::pixelFromCameraPixel(
+    size_t camera, const Eigen::Vector2d& pixel) const {
+  const geometry::RigCamera& cam = rig_.cameras.at(camera);
+  const auto ray = cam.model.unproject(pixel);
+  if (!ray) return std::nullopt;
+  const Eigen::Vector3d eye = cam.vehicle_from_camera.translation();
+  const Eigen::Vector3d d = cam.vehicle_from_camera.linear() * *ray;
+  if (d.z() >= -1e-6) return std::nullopt;  // at or above the horizon: never meets the floor
+  const double t = -eye.z() / d.z();
+  return pixelFromVehicle((eye + t * d).head<2>());
 }
 
 }  // namespace parkloc::sim

@@ -5,6 +5,7 @@
 // is left; its scale is fixed, so a number's size in pixels is its size on the floor.
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "geometry/pose.h"
@@ -37,6 +38,11 @@ class BirdsEyeStitcher {
   // The camera (rig index) whose image fills the AVM at `pixel`; -1 where none sees the floor
   // or the car stands.
   int cameraAt(const Eigen::Vector2d& pixel) const;
+  // Camera `camera`'s image pixel -> AVM pixel, through the floor; empty for a pixel whose ray
+  // does not meet the floor.
+  std::optional<Eigen::Vector2d> pixelFromCameraPixel(size_t camera,
+                                                      const Eigen::Vector2d& pixel) const;
+  size_t cameraCount() const { return map_x_.size(); }
 
  private:
   BirdsEyeOptions options_;
@@ -48,7 +54,8 @@ class BirdsEyeStitcher {
 // Labels of the AVM: the floor texts of `camera_labels` (one ImageLabels per rig camera, the
 // same frame set), each taken from the camera that fills the AVM at the text's centre, its
 // polygon the landmark's corners through the vehicle pose into AVM pixels; a text not wholly
-// inside the AVM is left out. Legibility and occlusion are that camera's.
+// inside the AVM is left out. Legibility and occlusion are that camera's. Text above the floor
+// that the stitching smears over it is labelled "not legible" (don't care).
 io::ImageLabels birdsEyeLabels(const Garage& garage, int level, const BirdsEyeStitcher& stitcher,
                                const geometry::Pose2& map_from_vehicle,
                                const std::vector<io::ImageLabels>& camera_labels);

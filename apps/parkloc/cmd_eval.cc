@@ -123,19 +123,22 @@ void runEvalBirdsEye(const EvalArgs& a, double metres_per_pixel) {
       },
       options);
   progress.finish();
-  std::cout << fmt::format("{} bird's-eye images (4 orientations each) from {} sequences ({} split "
-                           "of {}), engine {}\n\n",
-                           result.images, sequences.size(), a.split, a.dataset, spotter.name());
+  std::cout << fmt::format(
+      "{} bird's-eye images (4 orientations each) from {} sequences ({} split "
+      "of {}), engine {}\n\n",
+      result.images, sequences.size(), a.split, a.dataset, spotter.name());
   std::cout << eval::tableMarkdown(eval::table3(result, std::nullopt));
   std::cout << eval::tableMarkdown(eval::table3BirdsEye(result));
   const eval::Table looks = eval::table3Appearance(result);
   if (!looks.rows.empty()) std::cout << eval::tableMarkdown(looks);
   for (const std::string& o : eval::birdsEyeOrientations()) {
     eval::OcrCounts n;
-    if (const auto it = result.by_condition.find(o); it != result.by_condition.end()) n = it->second;
-    std::cout << fmt::format("{}: detection P {:.4f} R {:.4f} F {:.4f}, recognition with lexicon "
-                             "{:.4f}\n",
-                             o, n.precision(), n.recall(), n.fMeasure(), n.recognitionAccuracy());
+    if (const auto it = result.by_condition.find(o); it != result.by_condition.end())
+      n = it->second;
+    std::cout << fmt::format(
+        "{}: detection P {:.4f} R {:.4f} F {:.4f}, recognition with lexicon "
+        "{:.4f}\n",
+        o, n.precision(), n.recall(), n.fMeasure(), n.recognitionAccuracy());
   }
   if (!a.json.empty()) {
     nlohmann::json j = eval::ocrEvaluationJson(result);

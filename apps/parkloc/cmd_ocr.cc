@@ -71,15 +71,19 @@ void run(const OcrArgs& args) {
   if (!args.pose.empty() && (args.map.empty() || args.camera.empty()))
     throw InputError("--pose needs --map and --camera");
   if (args.birdseye && (camera != nullptr || !args.pose.empty()))
-    throw InputError("--birdseye takes no --camera or --pose: the image is the floor seen from above");
+    throw InputError(
+        "--birdseye takes no --camera or --pose: the image is the floor seen from above");
   if (args.metres_per_pixel > 0.0 && !args.birdseye)
     throw InputError("--metres-per-pixel needs --birdseye");
   request.camera = camera;
+  // Every image decoded before the models load: a bad file is reported at once.
+  std::vector<cv::Mat> images;
+  for (const std::string& path : args.images) images.push_back(ocr::readImage(path));
   ocr::PpOcrSpotter spotter(options);
 
   nlohmann::json all = nlohmann::json::array();
   for (size_t i = 0; i < args.images.size(); ++i) {
-    const cv::Mat image = ocr::readImage(args.images[i]);
+    const cv::Mat& image = images[i];
     std::optional<double> scale;
     if (args.metres_per_pixel > 0.0) scale = args.metres_per_pixel;
     const auto instances =

@@ -55,14 +55,16 @@ OcrEvaluation evaluateBirdsEye(const std::vector<std::string>& sequences,
     const io::Sequence seq(sequences[s]);
     const fs::path dir = fs::path(seq.dir()) / "birdseye";
     if (!fs::is_directory(dir / "labels"))
-      throw InputError(seq.dir() + ": no birdseye/labels (render with `parkloc simulate --birdseye`)");
+      throw InputError(seq.dir() +
+                       ": no birdseye/labels (render with `parkloc simulate --birdseye`)");
     std::vector<fs::path> label_files;
     for (const auto& e : fs::directory_iterator(dir / "labels"))
       if (e.path().extension() == ".json") label_files.push_back(e.path());
     std::sort(label_files.begin(), label_files.end());
     if (options.max_frames_per_sequence && label_files.size() > options.max_frames_per_sequence)
       label_files.resize(options.max_frames_per_sequence);
-    const std::vector<std::string> look = sequenceConditions(seq.metaJson(), seq.dir() + "/meta.json");
+    const std::vector<std::string> look =
+        sequenceConditions(seq.metaJson(), seq.dir() + "/meta.json");
     ocr::SpotRequest request;
     if (options.use_lexicon) {
       request.lexicon = map::distinctTexts(seq.map());

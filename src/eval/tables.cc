@@ -152,12 +152,11 @@ Table table3Appearance(const OcrEvaluation& ocr) {
 }
 
 Table table3BirdsEye(const OcrEvaluation& ocr) {
-  return subsetTable("table3_birdseye",
-                     "Table 3 on bird's-eye images: text spotting per orientation",
-                     "Stitched top-down (AVM) renders, as rendered (forward up) and turned "
-                     "clockwise by 90, 180 and 270 degrees.",
-                     "Orientation", {"avm_rot0", "avm_rot90", "avm_rot180", "avm_rot270"},
-                     ocr.by_condition);
+  return subsetTable(
+      "table3_birdseye", "Table 3 on bird's-eye images: text spotting per orientation",
+      "Stitched top-down (AVM) renders, as rendered (forward up) and turned "
+      "clockwise by 90, 180 and 270 degrees.",
+      "Orientation", {"avm_rot0", "avm_rot90", "avm_rot180", "avm_rot270"}, ocr.by_condition);
 }
 
 Table table3Heights(const OcrEvaluation& ocr) {
@@ -345,21 +344,19 @@ Table mapNoiseTable(const std::vector<MapNoiseRow>& rows) {
       "The pipeline localizes on the map perturbed (positions N(0, s) per axis, headings "
       "N(0, 1 deg x s / 10 cm), sizes x (1 + N(0, 5 %))); errors against the truth over frames "
       "with a pose. NEES: share of those frames inside the 95 % chi-square bound (3 dof).";
-  t.header = {"Map noise (cm)",      "Mean error (cm)",   "p95 error (cm)",
-              "Max error (cm)",      "Mean yaw error (deg)", "NEES inside 95 %",
-              "Frames with pose"};
+  t.header = {"Map noise (cm)",       "Mean error (cm)",  "p95 error (cm)",  "Max error (cm)",
+              "Mean yaw error (deg)", "NEES inside 95 %", "Frames with pose"};
   for (const MapNoiseRow& r : rows) {
     const VariantResult& v = r.result;
     const Summary& e = v.error.position_m;
-    t.rows.push_back(
-        {TableCell::number(r.noise_m * 100.0, 1), cm(e, &Summary::mean), cm(e, &Summary::p95),
-         cm(e, &Summary::max),
-         v.error.abs_yaw_deg.count ? TableCell::number(v.error.abs_yaw_deg.mean, 2)
-                                   : TableCell("-"),
-         r.nees_frames ? TableCell::percent(static_cast<double>(r.nees_inside) /
-                                            static_cast<double>(r.nees_frames))
-                       : TableCell("-"),
-         TableCell(fmt::format("{} / {}", v.frames_with_pose, v.frames))});
+    t.rows.push_back({TableCell::number(r.noise_m * 100.0, 1), cm(e, &Summary::mean),
+                      cm(e, &Summary::p95), cm(e, &Summary::max),
+                      v.error.abs_yaw_deg.count ? TableCell::number(v.error.abs_yaw_deg.mean, 2)
+                                                : TableCell("-"),
+                      r.nees_frames ? TableCell::percent(static_cast<double>(r.nees_inside) /
+                                                         static_cast<double>(r.nees_frames))
+                                    : TableCell("-"),
+                      TableCell(fmt::format("{} / {}", v.frames_with_pose, v.frames))});
   }
   return t;
 }
@@ -391,8 +388,14 @@ Table levelTable(const std::vector<VariantResult>& variants) {
       "labels) to the first decided on the right level; median / max over the drives "
       "(first level) and over the level changes; never: such a text was in view and the "
       "stretch ended undecided.";
-  t.header = {"Method", "Frame sets", "With a pose", "Decided", "Right where decided",
-              "Time to decide (s)", "Time to follow a change (s)", "Never decided"};
+  t.header = {"Method",
+              "Frame sets",
+              "With a pose",
+              "Decided",
+              "Right where decided",
+              "Time to decide (s)",
+              "Time to follow a change (s)",
+              "Never decided"};
   const auto delays = [](const std::vector<double>& d) -> TableCell {
     if (d.empty()) return TableCell("-");
     const Summary s = summarize(d);

@@ -92,8 +92,10 @@ AppearanceOptions appearancePreset(const std::string& name, const std::string& w
     for (const Field& f : kFields) options.*(f.member) = 1.0f;
     return options;
   }
-  throw InputError(where + ": field 'appearance' must be clean, realistic or a mapping of "
-                           "factors, not '" + name + "'");
+  throw InputError(where +
+                   ": field 'appearance' must be clean, realistic or a mapping of "
+                   "factors, not '" +
+                   name + "'");
 }
 
 }  // namespace parkloc::sim

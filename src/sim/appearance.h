@@ -15,10 +15,10 @@ struct AppearanceOptions {
   float gloss = 0.0f;       // wet or sealed sheen mirroring the ceiling lamps: its strength
   float epoxy = 0.0f;       // a coloured epoxy coating: how little concrete shows through it
   // The painted numbers (sim/number_styles.h): the share of numbers drawn in each style.
-  float stencil = 0.0f;    // stencil glyphs, their strokes cut by bridges
-  float outlined = 0.0f;   // hollow glyphs, only their outline painted
-  float boxed = 0.0f;      // inside a painted frame or on a coloured patch
-  float faded = 0.0f;      // paint worn down, some numbers past reading
+  float stencil = 0.0f;   // stencil glyphs, their strokes cut by bridges
+  float outlined = 0.0f;  // hollow glyphs, only their outline painted
+  float boxed = 0.0f;     // inside a painted frame or on a coloured patch
+  float faded = 0.0f;     // paint worn down, some numbers past reading
   // The camera (sim/camera_effects.h): the size of each effect.
   float auto_exposure = 0.0f;  // exposure hunting from frame to frame
   float white_balance = 0.0f;  // a colour cast of the lamps the camera does not remove

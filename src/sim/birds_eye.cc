@@ -17,7 +17,8 @@ BirdsEyeStitcher::BirdsEyeStitcher(const geometry::Rig& rig, const BirdsEyeOptio
     map_y_.emplace_back(rows, cols, CV_32F, cv::Scalar(-1));
   }
   std::vector<geometry::Rigid3> camera_from_vehicle;
-  for (const auto& cam : rig.cameras) camera_from_vehicle.push_back(cam.vehicle_from_camera.inverse());
+  for (const auto& cam : rig.cameras)
+    camera_from_vehicle.push_back(cam.vehicle_from_camera.inverse());
   for (int v = 0; v < rows; ++v)
     for (int u = 0; u < cols; ++u) {
       const Eigen::Vector2d xy = vehicleFromPixel(Eigen::Vector2d(u, v));
@@ -66,7 +67,8 @@ Eigen::Vector2d BirdsEyeStitcher::vehicleFromPixel(const Eigen::Vector2d& pixel)
 }
 
 int BirdsEyeStitcher::cameraAt(const Eigen::Vector2d& pixel) const {
-  const int u = static_cast<int>(std::lround(pixel.x())), v = static_cast<int>(std::lround(pixel.y()));
+  const int u = static_cast<int>(std::lround(pixel.x())),
+            v = static_cast<int>(std::lround(pixel.y()));
   if (u < 0 || v < 0 || u >= owner_.cols || v >= owner_.rows) return -1;
   return std::max(-1, static_cast<int>(owner_.at<int8_t>(v, u)));
 }

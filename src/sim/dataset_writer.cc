@@ -80,7 +80,8 @@ std::vector<SequencePlan> planSequences(const Scenario& scenario) {
       p.garage = gi;
       p.drive = di;
       // A repeated drive drives on the level of the drive it repeats.
-      const size_t own = g.drives[di].repeat_of >= 0 ? static_cast<size_t>(g.drives[di].repeat_of) : di;
+      const size_t own =
+          g.drives[di].repeat_of >= 0 ? static_cast<size_t>(g.drives[di].repeat_of) : di;
       p.level = g.drives[di].level.empty() ? g.levels[own % g.levels.size()] : g.drives[di].level;
       p.to_level = g.drives[di].to_level;
       p.split = g.split;
@@ -168,8 +169,8 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
   for (const auto& p : plans)
     any_look = any_look || scenario.garages[p.garage].drives[p.drive].appearance.any();
   auto rays = std::make_shared<const std::vector<CameraRays>>(buildRigRays(rig));
-  if (options.birdseye && !(options.birdseye_metres_per_pixel >= 0.005 &&
-                            options.birdseye_metres_per_pixel <= 0.1))
+  if (options.birdseye &&
+      !(options.birdseye_metres_per_pixel >= 0.005 && options.birdseye_metres_per_pixel <= 0.1))
     throw InputError(fmt::format("simulate: --birdseye-scale {} out of range (0.005 to 0.1 m)",
                                  options.birdseye_metres_per_pixel));
   std::optional<BirdsEyeStitcher> birdseye;
@@ -236,8 +237,9 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
     const GarageSpec& gs = scenario.garages[plan.garage];
     const DriveSpec& ds = gs.drives[plan.drive];
     // A repeated drive takes the seed of the drive it repeats: the same route, light and noise.
-    const uint64_t seed = driveSeed(scenario.seed, plan.garage,
-                                    ds.repeat_of >= 0 ? static_cast<size_t>(ds.repeat_of) : plan.drive);
+    const uint64_t seed =
+        driveSeed(scenario.seed, plan.garage,
+                  ds.repeat_of >= 0 ? static_cast<size_t>(ds.repeat_of) : plan.drive);
     // The drive's look: the garage restyled (its own copy) and the camera's effects.
     const AppearanceOptions& look = ds.appearance;
     const std::shared_ptr<const Garage> garage =

@@ -17,8 +17,8 @@ cv::Point fixedPoint(double x, double y, double tpm) {
   return {static_cast<int>(std::lround(x * tpm * 16)), static_cast<int>(std::lround(y * tpm * 16))};
 }
 
-void polyline(cv::Mat& canvas, const std::vector<Eigen::Vector2d>& pts, double tpm,
-              double width_m, double darkness) {
+void polyline(cv::Mat& canvas, const std::vector<Eigen::Vector2d>& pts, double tpm, double width_m,
+              double darkness) {
   std::vector<cv::Point> p;
   for (const auto& q : pts) p.push_back(fixedPoint(q.x(), q.y(), tpm));
   const int thickness = std::max(1, static_cast<int>(std::lround(width_m * tpm)));
@@ -113,7 +113,8 @@ cv::Mat floorGrime(const Garage& g, const GarageLevel& level, float strength,
       const int blobs = 3 + static_cast<int>(uniform(rng, 0, 4));
       const double dark = uniform(rng, 0.25, 0.6) * (0.4 + 0.6 * s);
       for (int k = 0; k < blobs; ++k) {
-        const Eigen::Vector2d q = c + r * Eigen::Vector2d(uniform(rng, -0.8, 0.8), uniform(rng, -0.8, 0.8));
+        const Eigen::Vector2d q =
+            c + r * Eigen::Vector2d(uniform(rng, -0.8, 0.8), uniform(rng, -0.8, 0.8));
         cv::ellipse(oil, fixedPoint(q.x(), q.y(), tpm),
                     cv::Size(static_cast<int>(r * uniform(rng, 0.4, 1.0) * tpm * 16),
                              static_cast<int>(r * uniform(rng, 0.3, 0.9) * tpm * 16)),
@@ -156,7 +157,8 @@ cv::Mat floorGrime(const Garage& g, const GarageLevel& level, float strength,
   for (int i = 0; i < patch_count; ++i) {
     const double w = uniform(rng, 0.8, 3.5), h = uniform(rng, 0.6, 2.5);
     const double x = uniform(rng, 0, g.size.x() - w), y = uniform(rng, 0, g.size.y() - h);
-    const double tone = uniform(rng, 0.0, 1.0) < 0.5 ? uniform(rng, 0.8, 0.92) : uniform(rng, 1.06, 1.15);
+    const double tone =
+        uniform(rng, 0.0, 1.0) < 0.5 ? uniform(rng, 0.8, 0.92) : uniform(rng, 1.06, 1.15);
     cv::rectangle(grime, cv::Point(static_cast<int>(x * tpm), static_cast<int>(y * tpm)),
                   cv::Point(static_cast<int>((x + w) * tpm), static_cast<int>((y + h) * tpm)),
                   cv::Scalar(tone), -1);

@@ -45,8 +45,7 @@ cv::Mat rectangleInk(double w, double h, double tpm, double line_m) {
   cv::Mat ink(rows, cols, CV_8UC1, cv::Scalar(255));
   if (line_m > 0.0) {
     const int line = std::max(1, static_cast<int>(std::lround(line_m * tpm)));
-    ink(cv::Rect(line, line, std::max(0, cols - 2 * line), std::max(0, rows - 2 * line)))
-        .setTo(0);
+    ink(cv::Rect(line, line, std::max(0, cols - 2 * line), std::max(0, rows - 2 * line))).setTo(0);
   }
   return ink;
 }
@@ -187,9 +186,8 @@ void styleNumbers(Garage& g, const AppearanceOptions& a, std::mt19937_64& rng) {
           const auto& [patch, ink] =
               patches[std::min(patches.size() - 1, static_cast<size_t>(u_colour * patches.size()))];
           const double mu = std::clamp(side_room, 0.03, 0.3 * h), mv = 0.3 * h;
-          Decal p = surroundingDecal(g, d, rectangleInk(d.size_u + 2 * mu, d.size_v + 2 * mv,
-                                                        100.0, 0.0),
-                                     mu, mv, patch);
+          Decal p = surroundingDecal(
+              g, d, rectangleInk(d.size_u + 2 * mu, d.size_v + 2 * mv, 100.0, 0.0), mu, mv, patch);
           p.opacity = 0.95f;
           p.backing = -2;  // marks the patch for the re-pointing below
           before[static_cast<size_t>(item.floor_decal)].push_back(p);

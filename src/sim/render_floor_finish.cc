@@ -33,7 +33,8 @@ float Renderer::Impl::mirroredLamps(const Eigen::Vector2f& q, const Eigen::Vecto
         const Lamp& l = L.lamps[static_cast<size_t>(*li)];
         const Eigen::Vector2f d = q - l.center;
         // The lamp's extent along and across the view, and q's offsets from its centre.
-        const float ha = std::abs(l.half_size.x() * along.x()) + std::abs(l.half_size.y() * along.y());
+        const float ha =
+            std::abs(l.half_size.x() * along.x()) + std::abs(l.half_size.y() * along.y());
         const float hc =
             std::abs(l.half_size.x() * across.x()) + std::abs(l.half_size.y() * across.y());
         const float da = std::abs(d.dot(along)), dc = std::abs(d.dot(across));
@@ -72,9 +73,9 @@ void Renderer::Impl::shadeFloorFinish(const PixelHit* hits, const int* pixels, i
       const float blur = 0.02f + roughness * t + h.footprint;
       const Eigen::Vector2f along = Eigen::Vector2f(h.d.x(), h.d.y()).normalized();
       const float reflect = fresnelSchlick(cos_i) * g.gloss * (0.35f + 0.65f * wet);
-      const float ceiling =
-          0.3f * ceiling_light_grid.at(q.x() * light_tpm, q.y() * light_tpm);
-      const float radiance = reflect * (mirroredLamps(q, along, blur, blur / std::max(0.1f, cos_i)) + ceiling);
+      const float ceiling = 0.3f * ceiling_light_grid.at(q.x() * light_tpm, q.y() * light_tpm);
+      const float radiance =
+          reflect * (mirroredLamps(q, along, blur, blur / std::max(0.1f, cos_i)) + ceiling);
       a += Eigen::Vector3f::Constant(radiance / std::max(0.02f, irradiance[x]));
     }
     albedo[x] = a;

@@ -121,7 +121,8 @@ GarageSpec parseGarage(const YAML::Node& node, const GarageSpec& defaults,
   read(node, "first_number", g.first_number, where);
   read(node, "fonts", g.fonts, where);
   read(node, "level_signs", g.level_signs, where);
-  if (const YAML::Node a = node["appearance"]) g.appearance = parseAppearance(a, g.appearance, where);
+  if (const YAML::Node a = node["appearance"])
+    g.appearance = parseAppearance(a, g.appearance, where);
   if (node["numbering"]) {
     std::string scheme;
     read(node, "numbering", scheme, where);

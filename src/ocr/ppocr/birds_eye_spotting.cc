@@ -19,7 +19,8 @@ std::vector<TextInstance> PpOcrSpotter::spotBirdsEye(const cv::Mat& image,
       metres_per_pixel ? *metres_per_pixel / options_.detection.floor_view.resolution : 1.0;
   cv::Mat view = image;
   if (std::abs(scale - 1.0) > 1e-3)
-    cv::resize(image, view, cv::Size(), scale, scale, scale < 1.0 ? cv::INTER_AREA : cv::INTER_LINEAR);
+    cv::resize(image, view, cv::Size(), scale, scale,
+               scale < 1.0 ? cv::INTER_AREA : cv::INTER_LINEAR);
   SpotRequest floor_request = request;
   floor_request.camera = nullptr;
   floor_request.placed_floor_texts.clear();

@@ -133,10 +133,11 @@ void runEvalBirdsEye(const EvalArgs& a, double metres_per_pixel) {
   if (!looks.rows.empty()) std::cout << eval::tableMarkdown(looks);
   for (const std::string& o : eval::birdsEyeOrientations()) {
     eval::OcrCounts n;
-    if (const auto it = result.by_condition.find(o); it != result.by_condition.end())
+    if (const auto it = result.parking_numbers_by_condition.find(o);
+        it != result.parking_numbers_by_condition.end())
       n = it->second;
     std::cout << fmt::format(
-        "{}: detection P {:.4f} R {:.4f} F {:.4f}, recognition with lexicon "
+        "{} parking numbers: detection P {:.4f} R {:.4f} F {:.4f}, reading with lexicon "
         "{:.4f}\n",
         o, n.precision(), n.recall(), n.fMeasure(), n.recognitionAccuracy());
   }

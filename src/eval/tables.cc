@@ -138,25 +138,26 @@ Table table3Appearance(const OcrEvaluation& ocr) {
   // bird's-eye orientations, "avm_*", have their own table).
   std::vector<std::string> names;
   const auto& fixed = conditionNames();
-  for (const auto& [name, counts] : ocr.by_condition)
+  for (const auto& [name, counts] : ocr.parking_numbers_by_condition)
     if (std::find(fixed.begin(), fixed.end(), name) == fixed.end() && name != "clean" &&
         name != "realistic" && name.rfind("avm_", 0) != 0)
       names.push_back(name);
-  if (ocr.by_condition.count("clean")) names.insert(names.begin(), "clean");
-  if (ocr.by_condition.count("realistic")) names.push_back("realistic");
+  if (ocr.parking_numbers_by_condition.count("clean")) names.insert(names.begin(), "clean");
+  if (ocr.parking_numbers_by_condition.count("realistic")) names.push_back("realistic");
   return subsetTable(
-      "table3_appearance", "Table 3 by appearance: text spotting per rendered look",
+      "table3_appearance", "Table 3 by appearance: parking numbers per rendered look",
       "Clean: the plain render; a factor's name: that factor alone on (sim/appearance.h); "
       "realistic: every factor on.",
-      "Look", names, ocr.by_condition);
+      "Look", names, ocr.parking_numbers_by_condition);
 }
 
 Table table3BirdsEye(const OcrEvaluation& ocr) {
-  return subsetTable(
-      "table3_birdseye", "Table 3 on bird's-eye images: text spotting per orientation",
-      "Stitched top-down (AVM) renders, as rendered (forward up) and turned "
-      "clockwise by 90, 180 and 270 degrees.",
-      "Orientation", {"avm_rot0", "avm_rot90", "avm_rot180", "avm_rot270"}, ocr.by_condition);
+  return subsetTable("table3_birdseye",
+                     "Table 3 on bird's-eye images: parking numbers per orientation",
+                     "Stitched top-down (AVM) renders, as rendered (forward up) and turned "
+                     "clockwise by 90, 180 and 270 degrees.",
+                     "Orientation", {"avm_rot0", "avm_rot90", "avm_rot180", "avm_rot270"},
+                     ocr.parking_numbers_by_condition);
 }
 
 Table table3Heights(const OcrEvaluation& ocr) {

@@ -1,5 +1,6 @@
 // parkloc eval DATASET      : the paper's tables 3, 5, 8 and 10 and the report.
 // parkloc eval ocr DATASET  : table 3 only (text spotting), printed and as JSON.
+// parkloc eval birdseye DATASET : table 3 on the stitched top-down images, four orientations.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -12,6 +13,7 @@
 #include "apps/parkloc/map_commands.h"
 #include "apps/parkloc/progress_line.h"
 #include "common/error.h"
+#include "eval/birds_eye_evaluation.h"
 #include "eval/dataset.h"
 #include "eval/evaluation.h"
 #include "eval/report.h"
@@ -19,6 +21,7 @@
 #include "eval/text_outcomes.h"
 #include "io/tum.h"
 #include "map/landmark.h"
+#include "ocr/ppocr/pp_ocr_spotter.h"
 
 namespace {
 
@@ -100,6 +103,55 @@ void runEvalOcr(const EvalArgs& a) {
     std::cout << "wrote " << a.json << "\n";
   }
   if (!a.outcomes.empty()) std::cout << "wrote " << a.outcomes << "\n";
+}
+
+// parkloc eval birdseye DATASET: Table 3 on the dataset's stitched top-down images in four
+// orientations.
+void runEvalBirdsEye(const EvalArgs& a, double metres_per_pixel) {
+  const std::vector<std::string> sequences = eval::splitSequences(a.dataset, a.split);
+  const config::Config config = a.config.load();
+  ocr::PpOcrSpotter spotter(config::spotterOptions(config));
+  app::ProgressLine progress(a.quiet);
+  eval::OcrRunOptions options;
+  options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
+  options.use_lexicon = !a.no_lexicon;
+  options.metrics.inside_image_only = !a.whole_polygons;
+  options.progress = [&](const eval::Progress& p) { progress(p); };
+  const eval::OcrEvaluation result = eval::evaluateBirdsEye(
+      sequences,
+      [&](const cv::Mat& image, const ocr::SpotRequest& request) {
+        return spotter.spotBirdsEye(image, request, metres_per_pixel);
+      },
+      options);
+  progress.finish();
+  std::cout << fmt::format(
+      "{} bird's-eye images (4 orientations each) from {} sequences ({} split "
+      "of {}), engine {}\n\n",
+      result.images, sequences.size(), a.split, a.dataset, spotter.name());
+  std::cout << eval::tableMarkdown(eval::table3(result, std::nullopt));
+  std::cout << eval::tableMarkdown(eval::table3BirdsEye(result));
+  const eval::Table looks = eval::table3Appearance(result);
+  if (!looks.rows.empty()) std::cout << eval::tableMarkdown(looks);
+  for (const std::string& o : eval::birdsEyeOrientations()) {
+    eval::OcrCounts n;
+    if (const auto it = result.parking_numbers_by_condition.find(o);
+        it != result.parking_numbers_by_condition.end())
+      n = it->second;
+    std::cout << fmt::format(
+        "{} parking numbers: detection P {:.4f} R {:.4f} F {:.4f}, reading with lexicon "
+        "{:.4f}\n",
+        o, n.precision(), n.recall(), n.fMeasure(), n.recognitionAccuracy());
+  }
+  if (!a.json.empty()) {
+    nlohmann::json j = eval::ocrEvaluationJson(result);
+    j["dataset"] = a.dataset;
+    j["split"] = a.split;
+    j["engine"] = spotter.name();
+    std::ofstream out(a.json);
+    if (!out) throw IoError(a.json + ": cannot open for writing");
+    out << j.dump(2) << "\n";
+    std::cout << "wrote " << a.json << "\n";
+  }
 }
 
 void runEval(const EvalArgs& a) {
@@ -184,9 +236,29 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   ocr_args->config.addTo(ocr_cmd);
   ocr_cmd->callback([ocr_args] { runEvalOcr(*ocr_args); });
 
+  auto avm_args = std::make_shared<EvalArgs>();
+  auto avm_scale = std::make_shared<double>(0.02);
+  auto* avm_cmd = cmd->add_subcommand(
+      "birdseye",
+      "Text spotting metrics (Table 3) on the stitched top-down images of a dataset split "
+      "(parkloc simulate --birdseye), in four orientations");
+  avm_cmd->add_option("dataset", avm_args->dataset, "Dataset folder (with splits.json)")
+      ->required();
+  avm_cmd->add_option("--split", avm_args->split, "train | val | test")->capture_default_str();
+  avm_cmd->add_option("--metres-per-pixel", *avm_scale, "Scale of the top-down images")
+      ->check(CLI::Range(0.001, 0.5))
+      ->capture_default_str();
+  avm_cmd->add_option("--json", avm_args->json, "Write every metric as JSON");
+  avm_cmd->add_option("--max-frames", avm_args->max_frames, "At most N images per sequence")
+      ->check(CLI::NonNegativeNumber);
+  avm_cmd->add_flag("--no-lexicon", avm_args->no_lexicon, "Free reading only");
+  avm_cmd->add_flag("--quiet", avm_args->quiet, "No progress on stderr");
+  avm_args->config.addTo(avm_cmd);
+  avm_cmd->callback([avm_args, avm_scale] { runEvalBirdsEye(*avm_args, *avm_scale); });
+
   CLI::App* map_cmd = app::addEvalMap(*cmd);
-  cmd->callback([args, ocr_cmd, map_cmd] {
-    if (ocr_cmd->parsed() || map_cmd->parsed()) return;
+  cmd->callback([args, ocr_cmd, avm_cmd, map_cmd] {
+    if (ocr_cmd->parsed() || avm_cmd->parsed() || map_cmd->parsed()) return;
     if (args->dataset.empty()) throw CLI::RequiredError("dataset");
     args->command_line =
         fmt::format("parkloc eval {} --split {}{}{}{}{}{}", args->dataset, args->split,

@@ -1,4 +1,6 @@
 // parkloc ocr IMAGE... : spot text in camera images with the PP-OCRv4 engine.
+#include <fmt/format.h>
+
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -8,6 +10,7 @@
 #include "apps/parkloc/config_args.h"
 #include "common/error.h"
 #include "geometry/rig.h"
+#include "geometry/text_polygon.h"
 #include "io/calibration_yaml.h"
 #include "io/map_geojson.h"
 #include "map/hd_map.h"
@@ -28,7 +31,18 @@ struct OcrArgs {
   std::string calib;
   std::vector<double> pose;  // x, y, yaw of the vehicle in the map; empty: none
   std::string level;
+  bool birdseye = false;
+  double metres_per_pixel = 0.0;  // 0: not given
 };
+
+// The size on the floor of a text found in a top-down image of `metres_per_pixel`: its
+// glyph height (polygon area over reading length) and its reading length, in metres.
+std::pair<double, double> floorSize(const parkloc::ocr::Quad& q, double metres_per_pixel) {
+  parkloc::geometry::TextPolygon p;
+  for (int k = 0; k < 4; ++k) p[k] = Eigen::Vector2d(q[k].x, q[k].y);
+  return {parkloc::geometry::apparentHeightPx(p) * metres_per_pixel,
+          parkloc::geometry::readingLengthPx(p) * metres_per_pixel};
+}
 
 void run(const OcrArgs& args) {
   using namespace parkloc;
@@ -56,18 +70,43 @@ void run(const OcrArgs& args) {
   }
   if (!args.pose.empty() && (args.map.empty() || args.camera.empty()))
     throw InputError("--pose needs --map and --camera");
+  if (args.birdseye && (camera != nullptr || !args.pose.empty()))
+    throw InputError(
+        "--birdseye takes no --camera or --pose: the image is the floor seen from above");
+  if (args.metres_per_pixel > 0.0 && !args.birdseye)
+    throw InputError("--metres-per-pixel needs --birdseye");
   request.camera = camera;
+  // Every image decoded before the models load: a bad file is reported at once.
+  std::vector<cv::Mat> images;
+  for (const std::string& path : args.images) images.push_back(ocr::readImage(path));
   ocr::PpOcrSpotter spotter(options);
 
   nlohmann::json all = nlohmann::json::array();
   for (size_t i = 0; i < args.images.size(); ++i) {
-    const cv::Mat image = ocr::readImage(args.images[i]);
-    const auto instances = spotter.spot(image, request);
+    const cv::Mat& image = images[i];
+    std::optional<double> scale;
+    if (args.metres_per_pixel > 0.0) scale = args.metres_per_pixel;
+    const auto instances =
+        args.birdseye ? spotter.spotBirdsEye(image, request, scale) : spotter.spot(image, request);
     if (args.json) {
-      all.push_back({{"image", args.images[i]}, {"instances", ocr::toJson(instances)}});
+      nlohmann::json found = ocr::toJson(instances);
+      if (scale)
+        for (size_t k = 0; k < instances.size(); ++k) {
+          const auto [height, length] = floorSize(instances[k].polygon, *scale);
+          found[k]["height_m"] = height;
+          found[k]["length_m"] = length;
+        }
+      all.push_back({{"image", args.images[i]}, {"instances", found}});
     } else {
       std::cout << args.images[i] << ": " << instances.size() << " text instances\n";
-      for (const auto& inst : instances) std::cout << "  " << ocr::describe(inst) << "\n";
+      for (const auto& inst : instances) {
+        std::cout << "  " << ocr::describe(inst);
+        if (scale) {
+          const auto [height, length] = floorSize(inst.polygon, *scale);
+          std::cout << fmt::format("  {:.2f} m tall, {:.2f} m long", height, length);
+        }
+        std::cout << "\n";
+      }
     }
     if (!args.draw.empty()) {
       std::string out = args.draw;
@@ -100,6 +139,13 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
                   "read against the texts placed near it, the way round they read")
       ->expected(3);
   cmd->add_option("--level", args->level, "With --pose: the garage level (default: every level)");
+  cmd->add_flag("--birdseye", args->birdseye,
+                "The images are stitched top-down views of the floor (AVM): floor text is read "
+                "in any orientation with the floor view's detector and reading cascade");
+  cmd->add_option("--metres-per-pixel", args->metres_per_pixel,
+                  "With --birdseye: the image's scale; the image is resampled to the floor "
+                  "view's and each text's size on the floor is printed")
+      ->check(CLI::Range(0.001, 0.5));
   cmd->callback([args] { run(*args); });
 });
 

@@ -25,6 +25,8 @@ struct SimulateArgs {
   std::vector<std::string> splits;
   int max_frames = -1;
   int jobs = 1;
+  bool birdseye = false;
+  double birdseye_scale = parkloc::sim::DatasetOptions{}.birdseye_metres_per_pixel;
   bool quiet = false;
 };
 
@@ -39,6 +41,8 @@ void runSimulate(const SimulateArgs& a) {
   options.splits = a.splits;
   options.max_frames = a.max_frames;
   options.jobs = a.jobs;
+  options.birdseye = a.birdseye;
+  options.birdseye_metres_per_pixel = a.birdseye_scale;
   const auto start = std::chrono::steady_clock::now();
   auto bar = [&](size_t done, size_t total) {
     if (a.quiet) return;
@@ -79,6 +83,7 @@ struct SheetArgs {
   std::string out;
   int per_sequence = 1;
   int max_rows = 12;
+  int tile_width = 480;
   bool labels = false;
   std::vector<std::string> sequences;
 };
@@ -105,7 +110,13 @@ void runSheet(const SheetArgs& a) {
     if (stamps.empty()) continue;
     std::string condition;
     std::ifstream meta(dir / "meta.json");
-    if (meta) condition = nlohmann::json::parse(meta, nullptr, false).value("condition", "");
+    if (meta) {
+      const nlohmann::json j = nlohmann::json::parse(meta, nullptr, false);
+      condition = j.value("condition", "");
+      // The drive's look, where the dataset names one (sim/appearance.h).
+      if (j.is_object() && j.contains("appearance") && j["appearance"].is_object())
+        condition += "  " + j["appearance"].value("subset", "");
+    }
     for (int k = 0; k < a.per_sequence; ++k) {
       const size_t i = (stamps.size() - 1) * (2 * k + 1) / (2 * a.per_sequence);
       rows.push_back(
@@ -114,23 +125,28 @@ void runSheet(const SheetArgs& a) {
   }
   if (static_cast<int>(rows.size()) > a.max_rows) rows.resize(a.max_rows);
   const cv::Mat sheet =
-      sim::makeContactSheet(rows, {"front", "left", "rear", "right"}, 480, a.labels);
-  if (!cv::imwrite(a.out, sheet)) throw IoError("sheet: cannot write " + a.out);
+      sim::makeContactSheet(rows, {"front", "left", "rear", "right"}, a.tile_width, a.labels);
+  // JPEG at 85: small enough for the docs, no visible loss at the sheet's scale.
+  if (!cv::imwrite(a.out, sheet, {cv::IMWRITE_JPEG_QUALITY, 85}))
+    throw IoError("sheet: cannot write " + a.out);
   std::cout << fmt::format("wrote {} ({} rows)\n", a.out, rows.size());
 }
 
 const bool registered_sheet = parkloc::app::registerCommand([](CLI::App& parent) {
   auto args = std::make_shared<SheetArgs>();
-  auto* cmd =
-      parent.add_subcommand("sheet", "Contact sheet (PNG) of frames of a simulated dataset");
+  auto* cmd = parent.add_subcommand("sheet",
+                                    "Contact sheet (PNG or JPEG) of frames of a simulated dataset");
   cmd->add_option("--dataset", args->dataset, "Dataset folder (holds sequences/)")->required();
-  cmd->add_option("--out", args->out, "Output PNG")->required();
+  cmd->add_option("--out", args->out, "Output image (.png or .jpg)")->required();
   cmd->add_option("--per-sequence", args->per_sequence, "Frame sets per sequence")
       ->check(CLI::Range(1, 50));
   cmd->add_option("--max-rows", args->max_rows, "At most this many rows")
       ->check(CLI::Range(1, 200));
   cmd->add_option("--sequence", args->sequences, "Only these sequences (repeatable)");
   cmd->add_flag("--labels", args->labels, "Draw the label polygons");
+  cmd->add_option("--tile-width", args->tile_width, "Width of each camera's image in pixels")
+      ->check(CLI::Range(64, 1280))
+      ->capture_default_str();
   cmd->callback([args] { runSheet(*args); });
 });
 
@@ -151,6 +167,11 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
                   "same garages as in the whole dataset");
   cmd->add_option("--max-frames", args->max_frames, "Write at most N frame sets per sequence");
   cmd->add_option("--jobs", args->jobs, "Sequences rendered in parallel")->check(CLI::Range(1, 64));
+  cmd->add_flag("--birdseye", args->birdseye,
+                "Also write each frame set's stitched top-down (AVM) image and its labels "
+                "(<sequence>/birdseye/)");
+  cmd->add_option("--birdseye-scale", args->birdseye_scale,
+                  "Metres per pixel of the top-down images");
   cmd->add_flag("--quiet", args->quiet, "No progress bar");
   cmd->callback([args] { runSimulate(*args); });
 });

@@ -176,6 +176,8 @@ void OcrEvaluator::add(const io::ImageLabels& truth,
     const double angle = label ? label->rotation_deg : readingAngleDeg(polygon);
     if (const auto rot = rotationSubset(angle)) out.push_back(&result_.by_condition[*rot]);
     if (cls == map::TextClass::kParkingNumber) {
+      for (const std::string& c : image_conditions)
+        out.push_back(&result_.parking_numbers_by_condition[c]);
       out.push_back(&result_.parking_numbers_by_height[heightBin(
           geometry::apparentHeightPx(io::textPolygon(polygon)))]);
       if (label) {

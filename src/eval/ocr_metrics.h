@@ -56,6 +56,9 @@ struct OcrEvaluation {
   OcrCounts overall;
   std::map<std::string, OcrCounts> by_class;      // "parking_number", "pillar", "other"
   std::map<std::string, OcrCounts> by_condition;  // names of conditionNames()
+  // The parking numbers alone per condition subset (the looks and bird's-eye orientations
+  // report these).
+  std::map<std::string, OcrCounts> parking_numbers_by_condition;
   // Parking numbers by apparent height in the image (heightBin): what the size of a
   // number costs.
   std::map<std::string, OcrCounts> parking_numbers_by_height;

@@ -130,6 +130,9 @@ nlohmann::json ocrEvaluationJson(const OcrEvaluation& ocr) {
   o["parking_numbers_by_height"] = nlohmann::json::object();
   for (const auto& [bin, c] : ocr.parking_numbers_by_height)
     o["parking_numbers_by_height"][bin] = countsJson(c);
+  o["parking_numbers_by_condition"] = nlohmann::json::object();
+  for (const auto& [name, c] : ocr.parking_numbers_by_condition)
+    o["parking_numbers_by_condition"][name] = countsJson(c);
   o["parking_numbers_by_paint"] = nlohmann::json::object();
   for (const auto& [bin, c] : ocr.parking_numbers_by_paint)
     o["parking_numbers_by_paint"][bin] = countsJson(c);

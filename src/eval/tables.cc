@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "eval/conditions.h"
 
 namespace parkloc::eval {
@@ -131,6 +133,33 @@ Table table3Conditions(const OcrEvaluation& ocr) {
       "Subset", conditionNames(), ocr.by_condition, conditionTitle);
 }
 
+Table table3Appearance(const OcrEvaluation& ocr) {
+  // The looks present: the clean render first, the factors alone, every factor on last (the
+  // bird's-eye orientations, "avm_*", have their own table).
+  std::vector<std::string> names;
+  const auto& fixed = conditionNames();
+  for (const auto& [name, counts] : ocr.parking_numbers_by_condition)
+    if (std::find(fixed.begin(), fixed.end(), name) == fixed.end() && name != "clean" &&
+        name != "realistic" && name.rfind("avm_", 0) != 0)
+      names.push_back(name);
+  if (ocr.parking_numbers_by_condition.count("clean")) names.insert(names.begin(), "clean");
+  if (ocr.parking_numbers_by_condition.count("realistic")) names.push_back("realistic");
+  return subsetTable(
+      "table3_appearance", "Table 3 by appearance: parking numbers per rendered look",
+      "Clean: the plain render; a factor's name: that factor alone on (sim/appearance.h); "
+      "realistic: every factor on.",
+      "Look", names, ocr.parking_numbers_by_condition);
+}
+
+Table table3BirdsEye(const OcrEvaluation& ocr) {
+  return subsetTable("table3_birdseye",
+                     "Table 3 on bird's-eye images: parking numbers per orientation",
+                     "Stitched top-down (AVM) renders, as rendered (forward up) and turned "
+                     "clockwise by 90, 180 and 270 degrees.",
+                     "Orientation", {"avm_rot0", "avm_rot90", "avm_rot180", "avm_rot270"},
+                     ocr.parking_numbers_by_condition);
+}
+
 Table table3Heights(const OcrEvaluation& ocr) {
   return subsetTable(
       "table3_heights", "Table 3 by size: parking numbers per apparent height",
@@ -220,6 +249,8 @@ std::vector<Table> table3All(const OcrEvaluation& ocr,
   std::vector<Table> out = {table3(ocr, afm), table3Conditions(ocr), table3Heights(ocr),
                             table3Paint(ocr), table3Sight(ocr)};
   if (!ocr.parking_numbers_by_ink.empty()) out.push_back(table3Ink(ocr));
+  const Table looks = table3Appearance(ocr);
+  if (!looks.rows.empty()) out.push_back(looks);
   out.push_back(table3HeightRule(ocr));
   if (ocr.parking_numbers_per_frame_set.numbers > 0) out.push_back(table3FrameSets(ocr));
   if (ocr.parking_numbers_per_drive.numbers > 0) out.push_back(table3Drives(ocr));
@@ -314,21 +345,19 @@ Table mapNoiseTable(const std::vector<MapNoiseRow>& rows) {
       "The pipeline localizes on the map perturbed (positions N(0, s) per axis, headings "
       "N(0, 1 deg x s / 10 cm), sizes x (1 + N(0, 5 %))); errors against the truth over frames "
       "with a pose. NEES: share of those frames inside the 95 % chi-square bound (3 dof).";
-  t.header = {"Map noise (cm)",      "Mean error (cm)",   "p95 error (cm)",
-              "Max error (cm)",      "Mean yaw error (deg)", "NEES inside 95 %",
-              "Frames with pose"};
+  t.header = {"Map noise (cm)",       "Mean error (cm)",  "p95 error (cm)",  "Max error (cm)",
+              "Mean yaw error (deg)", "NEES inside 95 %", "Frames with pose"};
   for (const MapNoiseRow& r : rows) {
     const VariantResult& v = r.result;
     const Summary& e = v.error.position_m;
-    t.rows.push_back(
-        {TableCell::number(r.noise_m * 100.0, 1), cm(e, &Summary::mean), cm(e, &Summary::p95),
-         cm(e, &Summary::max),
-         v.error.abs_yaw_deg.count ? TableCell::number(v.error.abs_yaw_deg.mean, 2)
-                                   : TableCell("-"),
-         r.nees_frames ? TableCell::percent(static_cast<double>(r.nees_inside) /
-                                            static_cast<double>(r.nees_frames))
-                       : TableCell("-"),
-         TableCell(fmt::format("{} / {}", v.frames_with_pose, v.frames))});
+    t.rows.push_back({TableCell::number(r.noise_m * 100.0, 1), cm(e, &Summary::mean),
+                      cm(e, &Summary::p95), cm(e, &Summary::max),
+                      v.error.abs_yaw_deg.count ? TableCell::number(v.error.abs_yaw_deg.mean, 2)
+                                                : TableCell("-"),
+                      r.nees_frames ? TableCell::percent(static_cast<double>(r.nees_inside) /
+                                                         static_cast<double>(r.nees_frames))
+                                    : TableCell("-"),
+                      TableCell(fmt::format("{} / {}", v.frames_with_pose, v.frames))});
   }
   return t;
 }
@@ -360,8 +389,14 @@ Table levelTable(const std::vector<VariantResult>& variants) {
       "labels) to the first decided on the right level; median / max over the drives "
       "(first level) and over the level changes; never: such a text was in view and the "
       "stretch ended undecided.";
-  t.header = {"Method", "Frame sets", "With a pose", "Decided", "Right where decided",
-              "Time to decide (s)", "Time to follow a change (s)", "Never decided"};
+  t.header = {"Method",
+              "Frame sets",
+              "With a pose",
+              "Decided",
+              "Right where decided",
+              "Time to decide (s)",
+              "Time to follow a change (s)",
+              "Never decided"};
   const auto delays = [](const std::vector<double>& d) -> TableCell {
     if (d.empty()) return TableCell("-");
     const Summary s = summarize(d);

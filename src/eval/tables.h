@@ -35,6 +35,11 @@ Table table3(const OcrEvaluation& ocr, const std::optional<AnomalyFilterCounts>&
 // OCR metrics per condition subset (the conditions of Table 8 applied to Table 3).
 Table table3Conditions(const OcrEvaluation& ocr);
 // Parking numbers per apparent height bin (OcrEvaluation::parking_numbers_by_height).
+// OCR metrics per rendered look (meta.json's appearance subset); table3All adds it when a
+// drive has one.
+Table table3Appearance(const OcrEvaluation& ocr);
+// OCR metrics of bird's-eye images per orientation (eval/birds_eye_evaluation.h).
+Table table3BirdsEye(const OcrEvaluation& ocr);
 Table table3Heights(const OcrEvaluation& ocr);
 // Parking numbers with intact and worn paint (OcrEvaluation::parking_numbers_by_paint).
 Table table3Paint(const OcrEvaluation& ocr);

@@ -82,6 +82,10 @@ std::vector<std::string> sequenceConditions(const std::string& meta_json,
     for (const char* key : {"condition", "conditions"}) {
       if (meta.contains(key)) collect(meta[key], key, out);
     }
+    // The simulator's look (sim/appearance.h): "clean", "realistic" or the factors on.
+    if (meta.contains("appearance") && meta["appearance"].is_object() &&
+        meta["appearance"].contains("subset") && meta["appearance"]["subset"].is_string())
+      out.push_back(meta["appearance"]["subset"].get<std::string>());
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -115,6 +115,9 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
       ink_snr = featureSnr(poly, characters, ink, options.legibility);
       legible = legible && *ink_snr >= options.legibility.min_feature_snr;
     }
+    if (item.floor_decal >= 0 && options.min_ink_kept > 0.0)
+      legible = legible && L.floor_decals.at(static_cast<size_t>(item.floor_decal)).ink_kept >=
+                               options.min_ink_kept;
     // Sample points on the text: inside the image, and seen or hidden.
     int inside = 0, hidden_count = 0, total = 0;
     const Eigen::Vector3d r = lm.readingDirection() * lm.width;

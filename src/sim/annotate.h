@@ -27,6 +27,11 @@ struct AnnotateOptions {
   // noise_sigma). The label then carries the feature's SNR (io::LabelInstance::ink_snr).
   std::function<double(int decal, const Eigen::Vector2d& pixel)> floor_ink_contrast;
   double channel_noise = 0.0;
+  // Painted floor text that kept less than this share of its ink (Decal::ink_kept) is not
+  // legible however large and sharp: with most of every glyph erased no reader makes out the
+  // digits. 0: no such rule. The dataset writer sets it for drives whose appearance fades the
+  // paint (sim/number_styles.h), which wears numbers that far.
+  double min_ink_kept = 0.0;
   double min_labelled_height_px = 3.0;
   double max_distance = 30.0;        // metres from the camera
   double min_inside_fraction = 0.3;  // of the text's sample points inside the image

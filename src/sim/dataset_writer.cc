@@ -23,8 +23,11 @@
 #include "io/sequence.h"
 #include "io/tum.h"
 #include "sim/annotate.h"
+#include "sim/birds_eye.h"
+#include "sim/camera_effects.h"
 #include "sim/drive.h"
 #include "sim/garage.h"
+#include "sim/garage_appearance.h"
 #include "sim/level_schedule.h"
 #include "sim/ramp_level.h"
 #include "sim/renderer.h"
@@ -56,6 +59,11 @@ struct SequenceResult {
 
 }  // namespace
 
+// Below this share of its ink left, a faded number is not legible (AnnotateOptions::
+// min_ink_kept): wearInk at the faded style's severities leaves 20-60 %, and at under 40 % whole
+// strokes of most digits are gone.
+constexpr double kMinInkKeptFaded = 0.4;
+
 uint64_t garageSeed(uint64_t scenario_seed, size_t garage) {
   return mix(mix(scenario_seed) ^ (garage + 1));
 }
@@ -71,7 +79,10 @@ std::vector<SequencePlan> planSequences(const Scenario& scenario) {
       SequencePlan p;
       p.garage = gi;
       p.drive = di;
-      p.level = g.drives[di].level.empty() ? g.levels[di % g.levels.size()] : g.drives[di].level;
+      // A repeated drive drives on the level of the drive it repeats.
+      const size_t own =
+          g.drives[di].repeat_of >= 0 ? static_cast<size_t>(g.drives[di].repeat_of) : di;
+      p.level = g.drives[di].level.empty() ? g.levels[own % g.levels.size()] : g.drives[di].level;
       p.to_level = g.drives[di].to_level;
       p.split = g.split;
       p.condition = g.drives[di].condition;
@@ -152,7 +163,22 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
         fmt::format("simulate: cannot create {}: {}", (root / "sequences").string(), ec.message()));
 
   const geometry::Rig rig = geometry::defaultRig();
+  // A dataset that renders any drive with a look names every drive's, the clean ones too, so
+  // that its evaluation has a subset per look; one without keeps the plain meta.json.
+  bool any_look = false;
+  for (const auto& p : plans)
+    any_look = any_look || scenario.garages[p.garage].drives[p.drive].appearance.any();
   auto rays = std::make_shared<const std::vector<CameraRays>>(buildRigRays(rig));
+  if (options.birdseye &&
+      !(options.birdseye_metres_per_pixel >= 0.005 && options.birdseye_metres_per_pixel <= 0.1))
+    throw InputError(fmt::format("simulate: --birdseye-scale {} out of range (0.005 to 0.1 m)",
+                                 options.birdseye_metres_per_pixel));
+  std::optional<BirdsEyeStitcher> birdseye;
+  if (options.birdseye) {
+    BirdsEyeOptions o;
+    o.metres_per_pixel = options.birdseye_metres_per_pixel;
+    birdseye.emplace(rig, o);
+  }
 
   // Plan every drive first (cheap) so the progress total is known.
   std::mutex garage_mutex;
@@ -207,10 +233,19 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
 
   auto runSequence = [&](size_t si) {
     const SequencePlan& plan = plans[si];
-    const std::shared_ptr<const Garage> garage = getGarage(plan.garage);
+    const std::shared_ptr<const Garage> generated = getGarage(plan.garage);
     const GarageSpec& gs = scenario.garages[plan.garage];
     const DriveSpec& ds = gs.drives[plan.drive];
-    const uint64_t seed = driveSeed(scenario.seed, plan.garage, plan.drive);
+    // A repeated drive takes the seed of the drive it repeats: the same route, light and noise.
+    const uint64_t seed =
+        driveSeed(scenario.seed, plan.garage,
+                  ds.repeat_of >= 0 ? static_cast<size_t>(ds.repeat_of) : plan.drive);
+    // The drive's look: the garage restyled (its own copy) and the camera's effects.
+    const AppearanceOptions& look = ds.appearance;
+    const std::shared_ptr<const Garage> garage =
+        look.changesGarage() ? std::make_shared<const Garage>(withAppearance(*generated, look))
+                             : generated;
+    const CameraEffects effects(look, rig, seed);
     const Drive drive = planDrive(*garage, garage->levelIndex(plan.level), ds, seed);
     const LevelSchedule schedule = levelSchedule(ds, plan.level, drive.duration());
     int n = static_cast<int>(std::floor(drive.duration() * scenario.frame_rate + 1e-9)) + 1;
@@ -246,6 +281,10 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
       fs::create_directories(dir / "images" / cam.name);
       fs::create_directories(dir / "labels" / cam.name);
     }
+    if (birdseye) {
+      fs::create_directories(dir / "birdseye" / "images");
+      fs::create_directories(dir / "birdseye" / "labels");
+    }
     io::saveCalibration(rig, (dir / "calib.yaml").string());
     io::saveMap(garage->map, (dir / "map.geojson").string());
 
@@ -265,9 +304,11 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
         levels_driven.push_back(levels.back().level);
       const Renderer& renderer = rendererFor(stretch);
       const int level = garage->levelIndex(levels.back().level);
-      const std::vector<cv::Mat> images =
-          renderer.render(state.pose, mix(seed ^ (static_cast<uint64_t>(k) << 16)));
+      const uint64_t frame_seed = mix(seed ^ (static_cast<uint64_t>(k) << 16));
+      std::vector<cv::Mat> images = renderer.render(state.pose, frame_seed);
+      for (size_t c = 0; c < images.size(); ++c) effects.apply(images[c], c, t, frame_seed);
       const std::string stem = io::timestampStem(t);
+      std::vector<io::ImageLabels> frame_labels;
       for (size_t c = 0; c < rig.cameras.size(); ++c) {
         const auto& cam = rig.cameras[c];
         const std::string image_path = (dir / "images" / cam.name / (stem + ".jpg")).string();
@@ -284,10 +325,12 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
           return renderer.floorInkContrast(c, pixel, decal);
         };
         annotate.channel_noise = light.noise_sigma;
+        if (look.faded > 0.0f) annotate.min_ink_kept = kMinInkKeptFaded;
         // On the ramp no text is in view.
         if (stretch != Stretch::kRamp)
           labels.instances = annotateImage(*garage, level, cam, state.pose, annotate);
         io::saveLabels(labels, (dir / "labels" / cam.name / (stem + ".json")).string());
+        if (birdseye) frame_labels.push_back(labels);
         io::saveIcdarLabels(labels, (dir / "labels" / cam.name / (stem + ".txt")).string());
         ++local.images;
         ++local.images_per_condition[plan.condition];
@@ -304,6 +347,20 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
           if (inst.occluded_fraction >= 0.5) ++local.occluded_instances;
           if (inst.truncated) ++local.truncated_instances;
         }
+      }
+      if (birdseye) {
+        const std::string path = (dir / "birdseye" / "images" / (stem + ".jpg")).string();
+        if (!cv::imwrite(path, birdseye->stitch(images),
+                         {cv::IMWRITE_JPEG_QUALITY, scenario.jpeg_quality}))
+          throw IoError(fmt::format("simulate: cannot write {}", path));
+        io::ImageLabels avm_labels;
+        if (stretch != Stretch::kRamp)
+          avm_labels = birdsEyeLabels(*garage, level, *birdseye, state.pose, frame_labels);
+        avm_labels.camera = "birdseye";
+        avm_labels.timestamp = t;
+        avm_labels.width = birdseye->size().width;
+        avm_labels.height = birdseye->size().height;
+        io::saveLabels(avm_labels, (dir / "birdseye" / "labels" / (stem + ".json")).string());
       }
       ++local.frame_sets;
       const size_t d = ++done;
@@ -334,6 +391,12 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
                               {"to", schedule.end_level},
                               {"ramp_start_s", schedule.ramp_start},
                               {"ramp_end_s", schedule.ramp_end}};
+    if (any_look) {
+      nlohmann::json factors = nlohmann::json::object();
+      for (const std::string& name : appearanceFactorNames())
+        if (appearanceFactor(look, name) > 0.0f) factors[name] = appearanceFactor(look, name);
+      meta["appearance"] = {{"subset", look.subset()}, {"factors", factors}};
+    }
     meta["split"] = plan.split;
     meta["condition"] = plan.condition;
     meta["route"] = ds.route;

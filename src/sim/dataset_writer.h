@@ -23,6 +23,10 @@ struct DatasetOptions {
   std::vector<std::string> splits;
   int max_frames = -1;  // per sequence; < 0: all
   int jobs = 1;         // sequences rendered at the same time
+  // Also write each frame set's stitched top-down image (sim/birds_eye.h) with its labels,
+  // under <sequence>/birdseye/images and birdseye/labels, at this many metres per pixel.
+  bool birdseye = false;
+  double birdseye_metres_per_pixel = 0.02;
 };
 
 // What was written. Rotation subsets follow the paper's Table 8: |rotation_deg| about 45

@@ -42,6 +42,9 @@ struct Decal {
   // The share of the rasterized ink that the wear left (1: intact): the worn text's mean
   // ink, for its contrast against the floor (Renderer::floorInkContrast).
   float ink_kept = 1.0f;
+  // A painted patch under the text (number_styles.h): its decal in the same list, -1: none.
+  // The text's contrast is then taken against the patch, not the bare floor.
+  int backing = -1;
 };
 
 // Ceiling lamp: an emissive rectangle on the ceiling, also the light source of the level.
@@ -78,6 +81,12 @@ struct GarageLevel {
   MipTexture paint_white, paint_yellow;
   // Stains, tyre marks and ambient occlusion: multiplier on the floor albedo, 5 cm texels.
   cv::Mat floor_shade;  // CV_32F
+  // The appearance's floor wear (sim/floor_wear.h): tyre streaks, oil, patches and cracks as a
+  // multiplier over the floor and its paint, at Garage::grime_texels_per_metre; empty: none.
+  cv::Mat floor_grime;  // CV_32F
+  // Where a glossy floor is wet (1) or only sealed (0) (sim/floor_finish.h), at
+  // Garage::wetness_texels_per_metre; empty with no gloss.
+  cv::Mat floor_wetness;  // CV_32F
 };
 
 struct Garage {
@@ -94,6 +103,10 @@ struct Garage {
   double concrete_texels_per_metre = 100.0;
   double paint_texels_per_metre = 50.0;
   double shade_texels_per_metre = 20.0;
+  double grime_texels_per_metre = 40.0;
+  double wetness_texels_per_metre = 5.0;
+  // The floor's mirror-like sheen (sim/floor_finish.h): 0 matte concrete.
+  float gloss = 0.0f;
   Eigen::Vector3f floor_albedo{0.45f, 0.44f, 0.42f};
   Eigen::Vector3f wall_albedo{0.7f, 0.7f, 0.68f};
   Eigen::Vector3f wall_band{0.85f, 0.7f, 0.1f};

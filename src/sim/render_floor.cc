@@ -115,7 +115,12 @@ double Renderer::Impl::floorInkContrast(size_t camera, const Eigen::Vector2d& pi
   const float vignette = cr.vignette[static_cast<size_t>(y) * cr.width + x];
   const Eigen::Vector3f centre = d.origin + 0.5f * d.size_u * d.axis_u + 0.5f * d.size_v * d.axis_v;
   // The bare floor under the text, the concrete averaged over a glyph's height.
-  const Eigen::Vector3f floor = bareFloorAlbedo(centre, d.size_v);
+  Eigen::Vector3f floor = bareFloorAlbedo(centre, d.size_v);
+  // A number on a painted patch stands out against the patch.
+  if (d.backing >= 0) {
+    const Decal& patch = L.floor_decals.at(static_cast<size_t>(d.backing));
+    floor += patch.opacity * (patch.color - floor);
+  }
   // The decal's blend (shadeFloorMarkings) at its mean ink: the opacity times what wear left.
   const Eigen::Vector3f ink = floor + d.opacity * d.ink_kept * (d.color - floor);
   const float scale = floor_light_grid.at(centre.x() * light_tpm, centre.y() * light_tpm) *

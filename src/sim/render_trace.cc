@@ -309,6 +309,9 @@ cv::Mat Renderer::Impl::renderCamera(size_t ci, const geometry::Pose2& pose, uin
                            buf.irradiance.data());
             // Pass 3: paint and text on the floor, then every other surface.
             shadeFloorMarkings(hits, buf.floor_pixels.data(), floor_count, buf.albedo.data());
+            if (floor_finish)
+              shadeFloorFinish(hits, buf.floor_pixels.data(), floor_count, buf.albedo.data(),
+                               buf.irradiance.data());
             for (int x = chunk; x < chunk_end; ++x) {
               const PixelHit& h = hits[x];
               if (h.surface == Surface::kNone || h.surface == Surface::kFloor) continue;

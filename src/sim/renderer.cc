@@ -47,6 +47,9 @@ Renderer::Impl::Impl(const Garage& garage, const GarageLevel& level, const geome
   floor_light_grid = FloatGrid(floor_light);
   ceiling_light_grid = FloatGrid(ceiling_light);
   floor_shade_grid = FloatGrid(L.floor_shade);
+  if (!L.floor_grime.empty()) grime_grid = FloatGrid(L.floor_grime);
+  if (!L.floor_wetness.empty()) wetness_grid = FloatGrid(L.floor_wetness);
+  floor_finish = !L.floor_grime.empty() || g.gloss > 0.0f;
   const int vw = static_cast<int>(std::ceil(g.size.x() * kVerticalTpm)) + 1;
   const int vh = static_cast<int>(std::ceil(g.size.y() * kVerticalTpm)) + 1;
   const Eigen::Vector2f normals[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};

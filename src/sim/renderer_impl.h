@@ -43,6 +43,10 @@ struct Renderer::Impl {
   // Floor irradiance (10 texels per metre) and ceiling brightness.
   cv::Mat floor_light, ceiling_light;
   FloatGrid floor_light_grid, ceiling_light_grid, floor_shade_grid;
+  // The appearance's floor wear and puddles (empty maps: none), and whether a pass over the
+  // floor's finish is needed at all.
+  FloatGrid grime_grid, wetness_grid;
+  bool floor_finish = false;
   float light_tpm = 10.0f;
   // Uniform grids (1 m cells) of floor decals and of lamps.
   int grid_w = 0, grid_h = 0;
@@ -115,6 +119,12 @@ struct Renderer::Impl {
   void shadeFloorMarkings(const PixelHit* hits, const int* pixels, int count,
                           Eigen::Vector3f* albedo) const;
   double floorInkContrast(size_t camera, const Eigen::Vector2d& pixel, int decal) const;
+  // The floor's wear over its paint, and a glossy floor's mirrored lamps and ceiling
+  // (render_floor_finish.cc); only when the garage has either.
+  void shadeFloorFinish(const PixelHit* hits, const int* pixels, int count, Eigen::Vector3f* albedo,
+                        const float* irradiance) const;
+  float mirroredLamps(const Eigen::Vector2f& q, const Eigen::Vector2f& along, float blur_m,
+                      float blur_along_m) const;
 
   // Every other surface (render_surfaces.cc).
   float verticalLightExact(const Eigen::Vector3f& p, const Eigen::Vector2f& n) const;

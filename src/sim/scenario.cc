@@ -29,10 +29,42 @@ void read(const YAML::Node& node, const char* key, T& value, const std::string& 
   }
 }
 
-DriveSpec parseDrive(const YAML::Node& node, const std::string& where) {
+// An `appearance` entry: a preset name ("clean", "realistic") or a mapping of factors, each
+// true / false or a strength in [0, 1], over `base` (what the garage says).
+AppearanceOptions parseAppearance(const YAML::Node& node, const AppearanceOptions& base,
+                                  const std::string& where) {
+  if (node.IsScalar()) return appearancePreset(node.as<std::string>(), where);
+  if (!node.IsMap())
+    throw InputError(where + ": field 'appearance' must be a preset name or a mapping");
+  AppearanceOptions out = base;
+  const auto& names = appearanceFactorNames();
+  for (const auto& entry : node) {
+    const std::string key = entry.first.as<std::string>();
+    if (std::find(names.begin(), names.end(), key) == names.end())
+      throw InputError(where + ": unknown appearance key '" + key + "'");
+    const YAML::Node& value = entry.second;
+    double strength = 0.0;
+    bool flag = false;
+    if (YAML::convert<bool>::decode(value, flag)) {
+      strength = flag ? 1.0 : 0.0;
+    } else if (!YAML::convert<double>::decode(value, strength)) {
+      throw InputError(where + ": appearance key '" + key + "' has an invalid value '" +
+                       YAML::Dump(value) + "'");
+    }
+    if (!(strength >= 0.0 && strength <= 1.0))
+      throw InputError(where + ": appearance key '" + key + "' out of range (0 to 1)");
+    appearanceFactor(out, key) = static_cast<float>(strength);
+  }
+  return out;
+}
+
+DriveSpec parseDrive(const YAML::Node& node, const AppearanceOptions& appearance,
+                     const std::string& where) {
   // yaml-cpp throws its own exceptions when a scalar is indexed like a mapping.
   if (!node.IsMap()) throw InputError(where + ": expected a mapping");
   DriveSpec d;
+  d.appearance = appearance;
+  if (const YAML::Node a = node["appearance"]) d.appearance = parseAppearance(a, appearance, where);
   read(node, "route", d.route, where);
   read(node, "condition", d.condition, where);
   read(node, "level", d.level, where);
@@ -40,6 +72,7 @@ DriveSpec parseDrive(const YAML::Node& node, const std::string& where) {
   read(node, "to_level", d.to_level, where);
   read(node, "transition_s", d.transition_s, where);
   read(node, "transition_at_s", d.transition_at_s, where);
+  read(node, "repeat_of", d.repeat_of, where);
   if (d.route != "tour" && d.route != "park")
     throw InputError(where + ": field 'route' must be tour or park, not '" + d.route + "'");
   if (d.condition != "bright" && d.condition != "weak" && d.condition != "blur")
@@ -88,6 +121,8 @@ GarageSpec parseGarage(const YAML::Node& node, const GarageSpec& defaults,
   read(node, "first_number", g.first_number, where);
   read(node, "fonts", g.fonts, where);
   read(node, "level_signs", g.level_signs, where);
+  if (const YAML::Node a = node["appearance"])
+    g.appearance = parseAppearance(a, g.appearance, where);
   if (node["numbering"]) {
     std::string scheme;
     read(node, "numbering", scheme, where);
@@ -97,8 +132,22 @@ GarageSpec parseGarage(const YAML::Node& node, const GarageSpec& defaults,
     if (!drives.IsSequence()) throw InputError(where + ": field 'drives' must be a list");
     g.drives.clear();
     for (size_t i = 0; i < drives.size(); ++i)
-      g.drives.push_back(parseDrive(drives[i], where + " drive " + std::to_string(i)));
+      g.drives.push_back(
+          parseDrive(drives[i], g.appearance, where + " drive " + std::to_string(i)));
   }
+  for (size_t i = 0; i < g.drives.size(); ++i) {
+    DriveSpec& d = g.drives[i];
+    if (d.repeat_of < 0) continue;
+    if (static_cast<size_t>(d.repeat_of) >= i || g.drives[d.repeat_of].repeat_of >= 0)
+      throw InputError(where + " drive " + std::to_string(i) +
+                       ": field 'repeat_of' must name an earlier drive of its own");
+    DriveSpec copy = g.drives[d.repeat_of];
+    copy.appearance = d.appearance;
+    copy.repeat_of = d.repeat_of;
+    d = copy;
+  }
+  if (node["appearance"] && !node["drives"])
+    for (DriveSpec& d : g.drives) d.appearance = g.appearance;
   if (g.split != "train" && g.split != "val" && g.split != "test")
     throw InputError(where + ": field 'split' must be train, val or test, not '" + g.split + "'");
   if (g.levels.empty()) throw InputError(where + ": field 'levels' is empty");

@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "sim/appearance.h"
+
 namespace parkloc::sim {
 
 // How parking numbers are written: "098", "117", "B2-117", "A023".
@@ -39,6 +41,13 @@ struct DriveSpec {
   // When the ramp begins, seconds from the start; < 0: the ramp is centred in the drive, so
   // both levels get the same time.
   double transition_at_s = -1.0;
+  // How the garage and the camera look on this drive (sim/appearance.h); the garage's
+  // `appearance` unless the drive names its own. Default: the clean look.
+  AppearanceOptions appearance;
+  // >= 0: the drive repeats drive `repeat_of` (an earlier one of the same garage) with its own
+  // look: the same route, light, frames and sensor noise, its fields copied from that drive,
+  // so that two looks compare on the same images. -1: a drive of its own.
+  int repeat_of = -1;
 };
 
 struct GarageSpec {
@@ -65,6 +74,8 @@ struct GarageSpec {
   // over each aisle, as real garages have them (garage_signs.cc). Off: no sign is placed and
   // nothing else of the garage changes.
   bool level_signs = false;
+  // The look of every drive that does not name its own (sim/appearance.h).
+  AppearanceOptions appearance;
   std::vector<DriveSpec> drives = {DriveSpec{}};
 };
 

@@ -13,6 +13,7 @@
 // With SpotRequest::regions, only those regions are processed (map-guided spotting,
 // regions.h).
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,14 @@ class PpOcrSpotter : public TextSpotter {
   std::vector<TextInstance> spot(const cv::Mat& image, const SpotRequest& request) override;
 
   const PpOcrOptions& options() const { return options_; }
+
+  // Floor text in a stitched top-down image of the floor (an AVM, around-view monitor): the
+  // floor detector and reading cascade of the floor view, run on the image as it is and
+  // turned a quarter, so that text reads in any direction (birds_eye_spotting.cc). Given its
+  // scale, the image is first resampled to the floor view's resolution, at which the floor
+  // detector was trained. Polygons are in the image's pixels.
+  std::vector<TextInstance> spotBirdsEye(const cv::Mat& image, const SpotRequest& request,
+                                         std::optional<double> metres_per_pixel = std::nullopt);
 
  private:
   std::vector<TextInstance> spotFullFrame(const cv::Mat& image, const SpotRequest& request);

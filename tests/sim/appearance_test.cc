@@ -147,10 +147,12 @@ TEST(Appearance, FadedNumbersPastReadingAreLabelledIllegible) {
     const geometry::Pose2 pose(x, faded.aisle_y[0] + 0.5, 0.0);
     for (const io::LabelInstance& l : annotateImage(faded, 0, rig.cameras[3], pose, options)) {
       if (l.cls != map::TextClass::kParkingNumber) continue;
-      for (const TextItem& item : faded.levels[0].texts)
+      for (const TextItem& item : faded.levels[0].texts) {
         if (item.landmark.id == l.landmark_id &&
-            faded.levels[0].floor_decals[static_cast<size_t>(item.floor_decal)].ink_kept < 0.4f)
+            faded.levels[0].floor_decals[static_cast<size_t>(item.floor_decal)].ink_kept < 0.4f) {
           EXPECT_FALSE(l.legible) << l.text;
+        }
+      }
     }
   }
 }

@@ -10,6 +10,8 @@ void describe(OptionVisitor& v, localize::MotionOptions& o) {
           "odometry older than this at a frame set is a dropped sensor (random walk)");
   v.value("constant_velocity_max_gap_s", o.constant_velocity_max_gap_s,
           "fixes further apart than this give no velocity (the vehicle may have turned)");
+  v.value("use_capture_times", o.use_capture_times,
+          "use each camera image at its own capture time; false: at the frame set's time");
 }
 
 void describe(OptionVisitor& v, localize::EkfOptions& o) {

@@ -27,6 +27,9 @@ struct MotionOptions {
   // longer interval the vehicle may have turned or stopped, and the random walk alone is the
   // honest prediction.
   double constant_velocity_max_gap_s = 0.5;
+  // Use each camera image at its own capture time (localize/capture_time.h); false: every
+  // image as if captured at the frame set's time.
+  bool use_capture_times = true;
 };
 
 // What the motion step saw of one frame set, for the stages after it.

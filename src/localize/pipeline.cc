@@ -76,7 +76,8 @@ struct Pipeline::Impl {
     //    search window's texts follow the vehicle.
     const Stopwatch motion_time;
     const FrameMotion moved = motion.advance(frame, ekf, result.warnings);
-    rig = rigAtFrameTime(nominal_rig, frame, motion.heldOdometry());
+    if (options.motion.use_capture_times)
+      rig = rigAtFrameTime(nominal_rig, frame, motion.heldOdometry());
     level.predict(frame.timestamp);
     if (options.paper_mode) paper.integrateOdometryYaw(moved);
     if (!lifecycle.searchWindow().empty())

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <future>
 #include <mutex>
+#include <random>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <thread>
@@ -293,11 +294,30 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
     std::vector<io::StampedPose> poses;
     std::vector<io::StampedLevel> levels;
     std::vector<std::string> levels_driven;
+    // Cameras not triggered together: each camera's capture time in frame set k.
+    const bool staggered = !ds.camera_delay_s.empty() || ds.camera_jitter_s > 0.0;
+    if (staggered && birdseye)
+      throw InputError(fmt::format("simulate: drive {} has camera delays; a stitched bird's-eye "
+                                   "image needs the cameras triggered together",
+                                   plan.name));
+    std::mt19937_64 jitter_rng(seed ^ 0x7177e7ULL);
+    std::uniform_real_distribution<double> jitter(0.0, ds.camera_jitter_s);
     const auto render_start = std::chrono::steady_clock::now();
     for (int k = 0; k < n; ++k) {
       const double t = k / scenario.frame_rate;
       const DriveState state = drive.at(t);
-      poses.push_back({t, state.pose.toRigid3()});
+      std::vector<double> capture(rig.cameras.size(), t);
+      if (staggered)
+        for (size_t c = 0; c < rig.cameras.size(); ++c) {
+          const auto delay = ds.camera_delay_s.find(rig.cameras[c].name);
+          capture[c] = t + (delay != ds.camera_delay_s.end() ? delay->second : 0.0) +
+                       (ds.camera_jitter_s > 0.0 ? jitter(jitter_rng) : 0.0);
+        }
+      // The truth at every capture time (the reader's frame set takes its earliest).
+      std::vector<double> stamps = capture;
+      std::sort(stamps.begin(), stamps.end());
+      stamps.erase(std::unique(stamps.begin(), stamps.end()), stamps.end());
+      for (const double tc : stamps) poses.push_back({tc, drive.at(tc).pose.toRigid3()});
       const Stretch stretch = schedule.stretchAt(t);
       levels.push_back({t, schedule.levelAt(t)});
       if (levels_driven.empty() || levels_driven.back() != levels.back().level)
@@ -305,18 +325,26 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
       const Renderer& renderer = rendererFor(stretch);
       const int level = garage->levelIndex(levels.back().level);
       const uint64_t frame_seed = mix(seed ^ (static_cast<uint64_t>(k) << 16));
-      std::vector<cv::Mat> images = renderer.render(state.pose, frame_seed);
-      for (size_t c = 0; c < images.size(); ++c) effects.apply(images[c], c, t, frame_seed);
-      const std::string stem = io::timestampStem(t);
+      std::vector<cv::Mat> images;
+      if (staggered) {
+        for (size_t c = 0; c < rig.cameras.size(); ++c)
+          images.push_back(renderer.renderCamera(c, drive.at(capture[c]).pose, frame_seed));
+      } else {
+        images = renderer.render(state.pose, frame_seed);
+      }
+      for (size_t c = 0; c < images.size(); ++c) effects.apply(images[c], c, capture[c], frame_seed);
+      const std::string frame_stem = io::timestampStem(t);
       std::vector<io::ImageLabels> frame_labels;
       for (size_t c = 0; c < rig.cameras.size(); ++c) {
         const auto& cam = rig.cameras[c];
+        const std::string stem = io::timestampStem(capture[c]);
+        const geometry::Pose2 camera_pose = staggered ? drive.at(capture[c]).pose : state.pose;
         const std::string image_path = (dir / "images" / cam.name / (stem + ".jpg")).string();
         if (!cv::imwrite(image_path, images[c], {cv::IMWRITE_JPEG_QUALITY, scenario.jpeg_quality}))
           throw IoError(fmt::format("simulate: cannot write {}", image_path));
         io::ImageLabels labels;
         labels.camera = cam.name;
-        labels.timestamp = t;
+        labels.timestamp = capture[c];
         labels.width = cam.model.width;
         labels.height = cam.model.height;
         AnnotateOptions annotate;
@@ -328,7 +356,7 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
         if (look.faded > 0.0f) annotate.min_ink_kept = kMinInkKeptFaded;
         // On the ramp no text is in view.
         if (stretch != Stretch::kRamp)
-          labels.instances = annotateImage(*garage, level, cam, state.pose, annotate);
+          labels.instances = annotateImage(*garage, level, cam, camera_pose, annotate);
         io::saveLabels(labels, (dir / "labels" / cam.name / (stem + ".json")).string());
         if (birdseye) frame_labels.push_back(labels);
         io::saveIcdarLabels(labels, (dir / "labels" / cam.name / (stem + ".txt")).string());
@@ -349,7 +377,7 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
         }
       }
       if (birdseye) {
-        const std::string path = (dir / "birdseye" / "images" / (stem + ".jpg")).string();
+        const std::string path = (dir / "birdseye" / "images" / (frame_stem + ".jpg")).string();
         if (!cv::imwrite(path, birdseye->stitch(images),
                          {cv::IMWRITE_JPEG_QUALITY, scenario.jpeg_quality}))
           throw IoError(fmt::format("simulate: cannot write {}", path));
@@ -360,7 +388,7 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
         avm_labels.timestamp = t;
         avm_labels.width = birdseye->size().width;
         avm_labels.height = birdseye->size().height;
-        io::saveLabels(avm_labels, (dir / "birdseye" / "labels" / (stem + ".json")).string());
+        io::saveLabels(avm_labels, (dir / "birdseye" / "labels" / (frame_stem + ".json")).string());
       }
       ++local.frame_sets;
       const size_t d = ++done;
@@ -386,6 +414,10 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
     meta["garage"] = gs.name;
     meta["level"] = plan.level;
     meta["levels_driven"] = levels_driven;
+    if (staggered) {
+      meta["camera_delay_s"] = ds.camera_delay_s;
+      meta["camera_jitter_s"] = ds.camera_jitter_s;
+    }
     if (schedule.changesLevel())
       meta["level_change"] = {{"from", schedule.start_level},
                               {"to", schedule.end_level},

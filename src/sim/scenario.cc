@@ -1,5 +1,6 @@
 #include "sim/scenario.h"
 
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -73,6 +74,24 @@ DriveSpec parseDrive(const YAML::Node& node, const AppearanceOptions& appearance
   read(node, "transition_s", d.transition_s, where);
   read(node, "transition_at_s", d.transition_at_s, where);
   read(node, "repeat_of", d.repeat_of, where);
+  read(node, "camera_jitter_s", d.camera_jitter_s, where);
+  if (const YAML::Node delays = node["camera_delay_s"]) {
+    if (!delays.IsMap()) throw InputError(where + ": field 'camera_delay_s' must map cameras to seconds");
+    for (const auto& item : delays) {
+      const std::string camera = item.first.as<std::string>();
+      double delay = 0.0;
+      try {
+        delay = item.second.as<double>();
+      } catch (const YAML::Exception&) {
+        throw InputError(where + ": camera_delay_s '" + camera + "' is not a number");
+      }
+      if (!(delay >= 0.0 && delay <= 0.1))
+        throw InputError(where + ": camera_delay_s '" + camera + "' out of range (0 to 0.1 s)");
+      d.camera_delay_s[camera] = delay;
+    }
+  }
+  if (!(d.camera_jitter_s >= 0.0 && d.camera_jitter_s <= 0.02))
+    throw InputError(where + ": field 'camera_jitter_s' out of range (0 to 0.02 s)");
   if (d.route != "tour" && d.route != "park")
     throw InputError(where + ": field 'route' must be tour or park, not '" + d.route + "'");
   if (d.condition != "bright" && d.condition != "weak" && d.condition != "blur")
@@ -143,6 +162,8 @@ GarageSpec parseGarage(const YAML::Node& node, const GarageSpec& defaults,
                        ": field 'repeat_of' must name an earlier drive of its own");
     DriveSpec copy = g.drives[d.repeat_of];
     copy.appearance = d.appearance;
+    copy.camera_delay_s = d.camera_delay_s;
+    copy.camera_jitter_s = d.camera_jitter_s;
     copy.repeat_of = d.repeat_of;
     d = copy;
   }
@@ -321,6 +342,19 @@ Scenario parseScenario(const std::string& yaml_text, const std::string& source_n
   for (size_t i = 0; i < garages.size(); ++i)
     s.garages.push_back(
         parseGarage(garages[i], defaults, source_name + " garage " + std::to_string(i)));
+  // A reader forms frame sets from images within 0.45 frame periods of the pacing camera's
+  // (io/frame_sets.h): the cameras' delays and jitter must stay inside that.
+  for (size_t g = 0; g < s.garages.size(); ++g)
+    for (size_t d = 0; d < s.garages[g].drives.size(); ++d) {
+      const DriveSpec& drive = s.garages[g].drives[d];
+      double spread = drive.camera_jitter_s;
+      for (const auto& [camera, delay] : drive.camera_delay_s) spread = std::max(spread, delay + drive.camera_jitter_s);
+      if (spread >= 0.4 / s.frame_rate)
+        throw InputError(fmt::format(
+            "{} garage {} drive {}: camera delays and jitter span {:.3f} s, more than 0.4 frame "
+            "periods ({:.3f} s)",
+            source_name, g, d, spread, 0.4 / s.frame_rate));
+    }
   return s;
 }
 

@@ -3,6 +3,7 @@
 // drives recorded in each of them. Read from a YAML scenario file or built in code; see
 // docs/DATASET.md for the file format.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,9 +45,16 @@ struct DriveSpec {
   // How the garage and the camera look on this drive (sim/appearance.h); the garage's
   // `appearance` unless the drive names its own. Default: the clean look.
   AppearanceOptions appearance;
+  // Cameras not triggered together: each camera captures this long after the frame set's
+  // trigger (seconds, per camera name; absent: 0), plus a delay drawn uniformly in
+  // [0, camera_jitter_s] per image. Images are named by their capture times, and the labels
+  // and poses.tum hold the truth at those times.
+  std::map<std::string, double> camera_delay_s;
+  double camera_jitter_s = 0.0;
   // >= 0: the drive repeats drive `repeat_of` (an earlier one of the same garage) with its own
-  // look: the same route, light, frames and sensor noise, its fields copied from that drive,
-  // so that two looks compare on the same images. -1: a drive of its own.
+  // look and camera delays: the same route, light, frames and sensor noise, its other fields
+  // copied from that drive, so that two looks (or a synchronised and a staggered rig) compare
+  // on the same drive. -1: a drive of its own.
   int repeat_of = -1;
 };
 

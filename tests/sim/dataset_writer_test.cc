@@ -3,11 +3,13 @@
 #include <unistd.h>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
 #include "io/sequence.h"
 #include "sim/dataset_writer.h"
+#include "sim/scenario.h"
 
 namespace parkloc::sim {
 namespace {
@@ -133,6 +135,70 @@ TEST(DatasetWriter, RejectsBadOptions) {
   options.out_dir = "/tmp/x";
   options.jobs = 0;
   EXPECT_THROW(writeDataset(demoScenario(), options), InputError);
+}
+
+TEST(DatasetWriter, CamerasWithDelaysAreRenderedAtTheirCaptureTimes) {
+  // Rear 30 ms and right 20 ms after the trigger, up to 5 ms jitter: each image is named by its
+  // capture time, its labels are at the vehicle's pose then, poses.tum holds every capture time,
+  // and the reader forms one frame set per trigger with each image's own time.
+  namespace fs = std::filesystem;
+  const fs::path out =
+      fs::temp_directory_path() / ("parkloc_sim_delays_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  Scenario s = demoScenario();
+  s.garages[0].slots_per_row = 9;
+  s.garages[0].drives[0].camera_delay_s = {{"rear", 0.030}, {"right", 0.020}};
+  s.garages[0].drives[0].camera_jitter_s = 0.005;
+  DatasetOptions options;
+  options.out_dir = out.string();
+  options.max_frames = 3;
+  writeDataset(s, options);
+  const io::Sequence seq((out / "sequences" / planSequences(s)[0].name).string());
+  ASSERT_EQ(seq.timestamps().size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    const double trigger = 0.1 * static_cast<double>(i);
+    for (const auto& [camera, delay] :
+         std::map<std::string, double>{{"front", 0.0}, {"left", 0.0}, {"rear", 0.030}, {"right", 0.020}}) {
+      const std::optional<double> t = seq.captureTime(i, camera);
+      ASSERT_TRUE(t) << camera;
+      EXPECT_GE(*t, trigger + delay - 1e-6) << camera;
+      EXPECT_LE(*t, trigger + delay + 0.005 + 1e-6) << camera;
+      const auto labels = seq.loadLabels(i, camera);
+      ASSERT_TRUE(labels) << camera;
+      EXPECT_NEAR(labels->timestamp, *t, 1e-6);
+    }
+    EXPECT_NE(*seq.captureTime(i, "rear"), *seq.captureTime(i, "front"));
+  }
+  // The truth at every capture time, in time order.
+  EXPECT_GE(seq.groundTruth().size(), 9u);
+  for (size_t k = 1; k < seq.groundTruth().size(); ++k)
+    EXPECT_GT(seq.groundTruth()[k].timestamp, seq.groundTruth()[k - 1].timestamp);
+  fs::remove_all(out);
+}
+
+TEST(DatasetWriter, CameraDelaysMustStayWithinAFrameSet) {
+  const std::string yaml = R"(
+frame_rate: 10
+garages:
+  - {name: g, levels: [B1], drives: [{route: tour, camera_delay_s: {rear: DELAY}, camera_jitter_s: 0.005}]}
+)";
+  const auto with = [&](const std::string& delay) {
+    std::string text = yaml;
+    text.replace(text.find("DELAY"), 5, delay);
+    return parseScenario(text, "s.yaml");
+  };
+  EXPECT_EQ(with("0.03").garages[0].drives[0].camera_delay_s.at("rear"), 0.03);
+  try {
+    with("0.04");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.yaml garage 0 drive 0: camera delays and jitter span "
+                                         "0.045 s, more than 0.4 frame periods (0.040 s)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(with("-0.01"), InputError);
+  EXPECT_THROW(with("fast"), InputError);
 }
 
 }  // namespace

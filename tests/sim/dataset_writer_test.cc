@@ -151,11 +151,11 @@ TEST(DatasetWriter, CamerasWithDelaysAreRenderedAtTheirCaptureTimes) {
   s.garages[0].drives[0].camera_jitter_s = 0.005;
   DatasetOptions options;
   options.out_dir = out.string();
-  options.max_frames = 3;
+  options.max_frames = 2;
   writeDataset(s, options);
   const io::Sequence seq((out / "sequences" / planSequences(s)[0].name).string());
-  ASSERT_EQ(seq.timestamps().size(), 3u);
-  for (size_t i = 0; i < 3; ++i) {
+  ASSERT_EQ(seq.timestamps().size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
     const double trigger = 0.1 * static_cast<double>(i);
     for (const auto& [camera, delay] :
          std::map<std::string, double>{{"front", 0.0}, {"left", 0.0}, {"rear", 0.030}, {"right", 0.020}}) {
@@ -170,7 +170,7 @@ TEST(DatasetWriter, CamerasWithDelaysAreRenderedAtTheirCaptureTimes) {
     EXPECT_NE(*seq.captureTime(i, "rear"), *seq.captureTime(i, "front"));
   }
   // The truth at every capture time, in time order.
-  EXPECT_GE(seq.groundTruth().size(), 9u);
+  EXPECT_GE(seq.groundTruth().size(), 6u);
   for (size_t k = 1; k < seq.groundTruth().size(); ++k)
     EXPECT_GT(seq.groundTruth()[k].timestamp, seq.groundTruth()[k - 1].timestamp);
   fs::remove_all(out);

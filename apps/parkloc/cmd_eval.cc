@@ -48,16 +48,22 @@ struct EvalArgs {
   std::string command_line;
 };
 
+// The options `eval ocr` and `eval birdseye` share, from their arguments.
+eval::OcrRunOptions ocrRunOptions(const EvalArgs& a, app::ProgressLine& progress) {
+  eval::OcrRunOptions options;
+  options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
+  options.use_lexicon = !a.no_lexicon;
+  options.metrics.inside_image_only = !a.whole_polygons;
+  options.progress = [&progress](const eval::Progress& p) { progress(p); };
+  return options;
+}
+
 void runEvalOcr(const EvalArgs& a) {
   const std::vector<std::string> sequences = eval::splitSequences(a.dataset, a.split);
   const config::Config config = a.config.load();
   auto spotter = app::makeSpotter(config);
   app::ProgressLine progress(a.quiet);
-  eval::OcrRunOptions options;
-  options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
-  options.use_lexicon = !a.no_lexicon;
-  options.metrics.inside_image_only = !a.whole_polygons;
-  options.progress = [&](const eval::Progress& p) { progress(p); };
+  eval::OcrRunOptions options = ocrRunOptions(a, progress);
   options.placement_radius_m = a.placement_radius;
   if (!a.poses.empty())  // DIR/<drive>/trajectory.tum, as `parkloc run --out DIR/<drive>` writes
     for (const std::string& sequence : sequences) {
@@ -112,11 +118,7 @@ void runEvalBirdsEye(const EvalArgs& a, double metres_per_pixel) {
   const config::Config config = a.config.load();
   ocr::PpOcrSpotter spotter(config::spotterOptions(config));
   app::ProgressLine progress(a.quiet);
-  eval::OcrRunOptions options;
-  options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
-  options.use_lexicon = !a.no_lexicon;
-  options.metrics.inside_image_only = !a.whole_polygons;
-  options.progress = [&](const eval::Progress& p) { progress(p); };
+  eval::OcrRunOptions options = ocrRunOptions(a, progress);
   const eval::OcrEvaluation result = eval::evaluateBirdsEye(
       sequences,
       [&](const cv::Mat& image, const ocr::SpotRequest& request) {

@@ -306,18 +306,24 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
     for (int k = 0; k < n; ++k) {
       const double t = k / scenario.frame_rate;
       const DriveState state = drive.at(t);
+      // Each camera's capture time and the vehicle's pose then.
       std::vector<double> capture(rig.cameras.size(), t);
+      std::vector<geometry::Pose2> camera_pose(rig.cameras.size(), state.pose);
       if (staggered)
         for (size_t c = 0; c < rig.cameras.size(); ++c) {
           const auto delay = ds.camera_delay_s.find(rig.cameras[c].name);
           capture[c] = t + (delay != ds.camera_delay_s.end() ? delay->second : 0.0) +
                        (ds.camera_jitter_s > 0.0 ? jitter(jitter_rng) : 0.0);
+          camera_pose[c] = drive.at(capture[c]).pose;
         }
       // The truth at every capture time (the reader's frame set takes its earliest).
-      std::vector<double> stamps = capture;
-      std::sort(stamps.begin(), stamps.end());
-      stamps.erase(std::unique(stamps.begin(), stamps.end()), stamps.end());
-      for (const double tc : stamps) poses.push_back({tc, drive.at(tc).pose.toRigid3()});
+      std::vector<std::pair<double, geometry::Pose2>> stamps;
+      for (size_t c = 0; c < capture.size(); ++c) stamps.emplace_back(capture[c], camera_pose[c]);
+      std::sort(stamps.begin(), stamps.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (size_t i = 0; i < stamps.size(); ++i)
+        if (i == 0 || stamps[i].first != stamps[i - 1].first)
+          poses.push_back({stamps[i].first, stamps[i].second.toRigid3()});
       const Stretch stretch = schedule.stretchAt(t);
       levels.push_back({t, schedule.levelAt(t)});
       if (levels_driven.empty() || levels_driven.back() != levels.back().level)
@@ -328,7 +334,7 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
       std::vector<cv::Mat> images;
       if (staggered) {
         for (size_t c = 0; c < rig.cameras.size(); ++c)
-          images.push_back(renderer.renderCamera(c, drive.at(capture[c]).pose, frame_seed));
+          images.push_back(renderer.renderCamera(c, camera_pose[c], frame_seed));
       } else {
         images = renderer.render(state.pose, frame_seed);
       }
@@ -338,7 +344,6 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
       for (size_t c = 0; c < rig.cameras.size(); ++c) {
         const auto& cam = rig.cameras[c];
         const std::string stem = io::timestampStem(capture[c]);
-        const geometry::Pose2 camera_pose = staggered ? drive.at(capture[c]).pose : state.pose;
         const std::string image_path = (dir / "images" / cam.name / (stem + ".jpg")).string();
         if (!cv::imwrite(image_path, images[c], {cv::IMWRITE_JPEG_QUALITY, scenario.jpeg_quality}))
           throw IoError(fmt::format("simulate: cannot write {}", image_path));
@@ -356,7 +361,7 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
         if (look.faded > 0.0f) annotate.min_ink_kept = kMinInkKeptFaded;
         // On the ramp no text is in view.
         if (stretch != Stretch::kRamp)
-          labels.instances = annotateImage(*garage, level, cam, camera_pose, annotate);
+          labels.instances = annotateImage(*garage, level, cam, camera_pose[c], annotate);
         io::saveLabels(labels, (dir / "labels" / cam.name / (stem + ".json")).string());
         if (birdseye) frame_labels.push_back(labels);
         io::saveIcdarLabels(labels, (dir / "labels" / cam.name / (stem + ".txt")).string());

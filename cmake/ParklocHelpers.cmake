@@ -12,6 +12,8 @@ function(parkloc_add_library name)
   endif()
   add_library(parkloc_${name} STATIC ${ARG_SOURCES})
   add_library(parkloc::${name} ALIAS parkloc_${name})
+  # Position-independent: the embeddable shared library (src/api) links these archives.
+  set_target_properties(parkloc_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   target_include_directories(parkloc_${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)
   target_link_libraries(parkloc_${name} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
   parkloc_warnings(parkloc_${name})

@@ -9,8 +9,7 @@ include(CMakePackageConfigHelpers)
 set(PARKLOC_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/parkloc)
 
 install(TARGETS parkloc_api EXPORT parklocTargets
-  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/parkloc DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 get_target_property(_ort_location onnxruntime::onnxruntime IMPORTED_LOCATION)
 if(_ort_location AND _ort_location MATCHES "^${PROJECT_SOURCE_DIR}/third_party/")

@@ -26,8 +26,11 @@ void print(const parkloc::PoseEstimate& p) {
 int main(int argc, char** argv) {
   if (argc < 2) return std::fprintf(stderr, "usage: embed SEQUENCE [CONFIG.yaml]\n"), 2;
   const fs::path dir = argv[1];
-  auto made = parkloc::Localizer::create({(dir / "calib.yaml").string(),
-                                          (dir / "map.geojson").string(), argc > 2 ? argv[2] : ""});
+  parkloc::LocalizerSettings settings;
+  settings.calibration_file = (dir / "calib.yaml").string();
+  settings.map_file = (dir / "map.geojson").string();
+  if (argc > 2) settings.config_file = argv[2];
+  auto made = parkloc::Localizer::create(settings);
   if (!made.localizer) return std::fprintf(stderr, "embed: %s\n", made.error.c_str()), 1;
   parkloc::Localizer& localizer = *made.localizer;
   std::cerr << "models: " << localizer.modelsDir() << "\n";

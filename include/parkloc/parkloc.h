@@ -3,7 +3,10 @@
 // and an optional configuration, fed camera images and wheel odometry as they arrive, giving
 // the vehicle's pose in the map once per frame set.
 //
-//   auto made = parkloc::Localizer::create({"calib.yaml", "map.geojson"});
+//   parkloc::LocalizerSettings settings;
+//   settings.calibration_file = "calib.yaml";
+//   settings.map_file = "map.geojson";
+//   auto made = parkloc::Localizer::create(settings);
 //   if (!made.localizer) { std::cerr << made.error << "\n"; return 1; }
 //   parkloc::Localizer& localizer = *made.localizer;
 //   localizer.addOdometry(t, speed, yaw_rate);                  // as samples arrive
@@ -108,7 +111,9 @@ class Localizer {
 
   // A wheel-odometry sample: forward speed (m/s) and yaw rate (rad/s, counter-clockwise).
   void addOdometry(double timestamp, double speed, double yaw_rate);
-  // An 8-bit BGR image (as cv::imread or cv::VideoCapture give it) and its capture time.
+  // An 8-bit BGR image (as cv::imread or cv::VideoCapture give it) and its capture time. An
+  // image of another type is dropped with a warning; an empty one stands for a frame that
+  // could not be decoded (the camera counts as present, the pipeline reports it).
   // Returns the estimates of the frame sets this image completes, oldest first: none while
   // the set waits for other cameras, one usually, two when the image closes the open set and
   // completes a set of its own.

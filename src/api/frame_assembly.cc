@@ -17,6 +17,12 @@ std::vector<localize::FrameInput> FrameAssembly::addImage(const std::string& cam
     warnings_.push_back(fmt::format("image of camera '{}' dropped: not in the calibration", camera));
     return closed;
   }
+  if (!image.empty() && image.type() != CV_8UC3) {
+    // The spotter reads 8-bit BGR only; this camera's image is missing from its set.
+    warnings_.push_back(fmt::format("image of camera '{}' at {:.6f} s dropped: not 8-bit BGR",
+                                    camera, timestamp));
+    return closed;
+  }
   if (!std::isfinite(timestamp)) {
     warnings_.push_back(fmt::format("image of camera '{}' dropped: capture time {}", camera,
                                     timestamp));

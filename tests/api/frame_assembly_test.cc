@@ -72,6 +72,16 @@ TEST(FrameAssembly, LateAndUnknownImagesAreDroppedWithAWarning) {
   EXPECT_EQ(camerasOf(*assembly.flush()), std::vector<std::string>{"front"});
 }
 
+TEST(FrameAssembly, AnImageThatIsNotBgrIsDroppedAndAnEmptyOneKept) {
+  FrameAssembly assembly({"front", "left"}, 0.045);
+  EXPECT_TRUE(assembly.addImage("front", 1.0, cv::Mat(8, 8, CV_8UC1)).empty());
+  ASSERT_EQ(assembly.takeWarnings().size(), 1u);
+  // An empty image stands for one that could not be decoded: the pipeline reports it.
+  const auto closed = assembly.addImage("left", 1.0, cv::Mat());
+  EXPECT_TRUE(closed.empty());
+  EXPECT_EQ(camerasOf(*assembly.flush()), std::vector<std::string>{"left"});
+}
+
 TEST(FrameAssembly, OdometryGoesWithTheFirstSetAtOrAfterIt) {
   FrameAssembly assembly({"front"}, 0.045);
   assembly.addOdometry({0.95, 1.0, 0.0});

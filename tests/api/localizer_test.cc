@@ -22,27 +22,34 @@ const std::string kData = std::string(PARKLOC_SOURCE_DIR) + "/data";
 const std::string kCalib = kData + "/rig/default_rig.yaml";
 const std::string kMap = kData + "/maps/example_garage.geojson";
 
+LocalizerSettings settingsFor(const std::string& calibration, const std::string& map) {
+  LocalizerSettings settings;
+  settings.calibration_file = calibration;
+  settings.map_file = map;
+  return settings;
+}
+
 TEST(LocalizerCreate, AMissingCalibrationIsOneLineNamingTheFile) {
-  const auto made = Localizer::create({"/nonexistent/calib.yaml", kMap});
+  const auto made = Localizer::create(settingsFor("/nonexistent/calib.yaml", kMap));
   EXPECT_FALSE(made.localizer.has_value());
   EXPECT_NE(made.error.find("/nonexistent/calib.yaml"), std::string::npos) << made.error;
   EXPECT_EQ(made.error.find('\n'), std::string::npos) << made.error;
 }
 
 TEST(LocalizerCreate, AMapThatIsNotGeoJsonIsRejected) {
-  const auto made = Localizer::create({kCalib, kCalib});
+  const auto made = Localizer::create(settingsFor(kCalib, kCalib));
   EXPECT_FALSE(made.localizer.has_value());
   EXPECT_NE(made.error.find("malformed JSON"), std::string::npos) << made.error;
 }
 
 TEST(LocalizerCreate, AnEmptyCalibrationPathIsRejected) {
-  const auto made = Localizer::create({"", kMap});
+  const auto made = Localizer::create(settingsFor("", kMap));
   EXPECT_FALSE(made.localizer.has_value());
   EXPECT_NE(made.error.find("calibration"), std::string::npos) << made.error;
 }
 
 TEST(LocalizerCreate, AModelFolderWithoutModelsIsRejected) {
-  LocalizerSettings settings{kCalib, kMap};
+  LocalizerSettings settings = settingsFor(kCalib, kMap);
   settings.models_dir = "/nonexistent/models";
   const auto made = Localizer::create(settings);
   EXPECT_FALSE(made.localizer.has_value());
@@ -50,7 +57,7 @@ TEST(LocalizerCreate, AModelFolderWithoutModelsIsRejected) {
 }
 
 TEST(LocalizerCreate, AMisspeltConfigurationKeyIsRejected) {
-  LocalizerSettings settings{kCalib, kMap};
+  LocalizerSettings settings = settingsFor(kCalib, kMap);
   settings.config_file = std::string(PARKLOC_SOURCE_DIR) + "/tests/data/config/unknown_key.yaml";
   const auto made = Localizer::create(settings);
   EXPECT_FALSE(made.localizer.has_value());
@@ -58,13 +65,30 @@ TEST(LocalizerCreate, AMisspeltConfigurationKeyIsRejected) {
 }
 
 TEST(LocalizerCreate, TheCalibrationNamesTheCamerasAndTheModelsAreTheBuilds) {
-  LocalizerSettings settings{kCalib, kMap};
+  LocalizerSettings settings = settingsFor(kCalib, kMap);
   settings.models_dir = PARKLOC_MODEL_DIR;
   const auto made = Localizer::create(settings);
   ASSERT_TRUE(made.localizer.has_value()) << made.error;
   EXPECT_EQ(made.localizer->cameras(),
-            (std::vector<std::string>{"front", "left", "rear", "right"}));
+            (std::vector<std::string>{"front", "rear", "left", "right"}));  // calibration order
   EXPECT_EQ(made.localizer->modelsDir(), PARKLOC_MODEL_DIR);
+}
+
+TEST(Localizer, AnImageOfACameraNotInTheCalibrationIsReportedNotFatal) {
+  LocalizerSettings settings = settingsFor(kCalib, kMap);
+  settings.models_dir = PARKLOC_MODEL_DIR;
+  auto made = Localizer::create(settings);
+  ASSERT_TRUE(made.localizer.has_value()) << made.error;
+  const cv::Mat dark(800, 1280, CV_8UC3, cv::Scalar(20, 20, 20));  // the default rig's size
+  EXPECT_TRUE(made.localizer->addImage("roof", 1.0, dark).empty());
+  std::vector<PoseEstimate> estimates;
+  for (const std::string& camera : made.localizer->cameras())
+    for (auto& e : made.localizer->addImage(camera, 1.0, dark)) estimates.push_back(std::move(e));
+  ASSERT_EQ(estimates.size(), 1u);
+  EXPECT_FALSE(estimates[0].has_pose);
+  EXPECT_EQ(estimates[0].status, TrackingStatus::kNoFix);
+  ASSERT_FALSE(estimates[0].warnings.empty());
+  EXPECT_NE(estimates[0].warnings[0].find("'roof'"), std::string::npos);
 }
 
 // The drive's true position at a capture time (poses.tum holds every one).
@@ -98,8 +122,8 @@ class LocalizerDrive : public ::testing::Test {
   }
 
   static Localizer make() {
-    LocalizerSettings settings{(fs::path(sequence_->dir()) / "calib.yaml").string(),
-                               (fs::path(sequence_->dir()) / "map.geojson").string()};
+    LocalizerSettings settings = settingsFor((fs::path(sequence_->dir()) / "calib.yaml").string(),
+                                             (fs::path(sequence_->dir()) / "map.geojson").string());
     settings.models_dir = PARKLOC_MODEL_DIR;
     auto made = Localizer::create(settings);
     if (!made.localizer) throw std::runtime_error(made.error);
@@ -146,19 +170,6 @@ TEST_F(LocalizerDrive, ImagesAndOdometryAsTheyArriveGiveThePoseOfEachFrameSet) {
     EXPECT_FALSE(e.level.empty());
   }
   EXPECT_GE(posed, kFrames / 2) << "the first fix came late or the track was lost";
-}
-
-TEST_F(LocalizerDrive, AnImageOfACameraNotInTheCalibrationIsReportedNotFatal) {
-  Localizer localizer = make();
-  const auto& s = *sequence_;
-  EXPECT_TRUE(localizer.addImage("roof", s.timestamps()[0], s.loadImage(0, "front")).empty());
-  std::vector<PoseEstimate> estimates;
-  for (const std::string& camera : s.cameras())
-    for (auto& e : localizer.addImage(camera, *s.captureTime(0, camera), s.loadImage(0, camera)))
-      estimates.push_back(std::move(e));
-  ASSERT_EQ(estimates.size(), 1u);
-  ASSERT_FALSE(estimates[0].warnings.empty());
-  EXPECT_NE(estimates[0].warnings[0].find("'roof'"), std::string::npos);
 }
 
 }  // namespace

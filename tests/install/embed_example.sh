@@ -23,7 +23,7 @@ grep -qx "models: $work/prefix/share/parkloc/models" "$work/stderr.log" ||
   { echo "the example did not use the installed models:"; cat "$work/stderr.log"; exit 1; }
 # Each estimate against the truth at its time (poses.tum: t x y z qx qy qz qw).
 awk -v frames=$frames '
-  NR == FNR { truth[sprintf("%.6f", $1)] = $2 " " $3; next }
+  NR == FNR { if ($1 !~ /^#/) truth[sprintf("%.6f", $1)] = $2 " " $3; next }
   {
     key = sprintf("%.6f", $1)
     if (!(key in truth)) { print "no truth at " key; bad = 1; next }

@@ -59,9 +59,9 @@ struct LocalizerSettings {
   // A hint: the map level the drive starts on; "": the configuration's, else estimated from
   // the texts seen.
   std::string level;
-  // How far apart two cameras' capture times may be and still form one frame set: less than
-  // half the frame period (0.045 s suits 10 Hz cameras, the rule io/frame_sets.h applies to a
-  // recorded drive: 0.45 times the frame interval).
+  // How far from a frame set's first image (before or after) another camera's image may be
+  // captured and still join the set: under half the frame period. 0.045 s suits 10 Hz cameras (0.45 frame
+  // periods, the tolerance `parkloc run` derives from a recorded drive's frame rate).
   double frame_set_tolerance_s = 0.045;
 };
 

@@ -64,6 +64,15 @@ TEST(LocalizerCreate, AMisspeltConfigurationKeyIsRejected) {
   EXPECT_NE(made.error.find("unknown option"), std::string::npos) << made.error;
 }
 
+TEST(LocalizerCreate, ALevelHintTheMapDoesNotHaveIsRejected) {
+  LocalizerSettings settings = settingsFor(kCalib, kMap);
+  settings.models_dir = PARKLOC_MODEL_DIR;
+  settings.level = "B9";
+  const auto made = Localizer::create(settings);
+  EXPECT_FALSE(made.localizer.has_value());
+  EXPECT_NE(made.error.find("\"B9\" is not a level of the map"), std::string::npos) << made.error;
+}
+
 TEST(LocalizerCreate, TheCalibrationNamesTheCamerasAndTheModelsAreTheBuilds) {
   LocalizerSettings settings = settingsFor(kCalib, kMap);
   settings.models_dir = PARKLOC_MODEL_DIR;

@@ -78,7 +78,17 @@ void run(const OcrArgs& args) {
   request.camera = camera;
   // Every image decoded before the models load: a bad file is reported at once.
   std::vector<cv::Mat> images;
-  for (const std::string& path : args.images) images.push_back(ocr::readImage(path));
+  for (const std::string& path : args.images) {
+    images.push_back(ocr::readImage(path));
+    // An image of another size is another camera's, or resized: its floor view and ground
+    // fit would read garbage, so it is refused, not read as a raw image.
+    if (camera != nullptr &&
+        (images.back().cols != camera->model.width || images.back().rows != camera->model.height))
+      throw InputError(fmt::format("{}: image {}x{} differs from camera '{}' of the calibration "
+                                   "({}x{})",
+                                   path, images.back().cols, images.back().rows, camera->name,
+                                   camera->model.width, camera->model.height));
+  }
   ocr::PpOcrSpotter spotter(options);
 
   nlohmann::json all = nlohmann::json::array();

@@ -10,6 +10,7 @@
 #include "apps/parkloc/command.h"
 
 #include "common/error.h"
+#include "io/calibration_yaml.h"
 #include "io/sequence.h"
 #include "sim/contact_sheet.h"
 #include "sim/dataset_writer.h"
@@ -19,6 +20,7 @@ namespace {
 
 struct SimulateArgs {
   std::string scenario;
+  std::string calib;
   std::string out;
   long long seed = -1;
   int max_sequences = -1;
@@ -36,6 +38,7 @@ void runSimulate(const SimulateArgs& a) {
       a.scenario.empty() ? sim::defaultScenario() : sim::loadScenario(a.scenario);
   sim::DatasetOptions options;
   options.out_dir = a.out;
+  if (!a.calib.empty()) options.rig = io::loadCalibration(a.calib);
   if (a.seed >= 0) options.seed = static_cast<uint64_t>(a.seed);
   options.max_sequences = a.max_sequences;
   options.splits = a.splits;
@@ -104,7 +107,9 @@ void runSheet(const SheetArgs& a) {
   for (const auto& name : names) {
     const fs::path dir = root / name;
     std::vector<double> stamps;
-    for (const auto& e : fs::directory_iterator(dir / "images" / "front"))
+    const std::string first_camera =
+        io::loadCalibration((dir / "calib.yaml").string()).cameras.front().name;
+    for (const auto& e : fs::directory_iterator(dir / "images" / first_camera))
       stamps.push_back(std::stod(e.path().stem().string()));
     std::sort(stamps.begin(), stamps.end());
     if (stamps.empty()) continue;
@@ -124,8 +129,13 @@ void runSheet(const SheetArgs& a) {
     }
   }
   if (static_cast<int>(rows.size()) > a.max_rows) rows.resize(a.max_rows);
-  const cv::Mat sheet =
-      sim::makeContactSheet(rows, {"front", "left", "rear", "right"}, a.tile_width, a.labels);
+  if (rows.empty()) throw InputError("sheet: no frames under " + root.string());
+  // The cameras of the first row's rig, in its calibration's order.
+  std::vector<std::string> cameras;
+  for (const auto& camera :
+       io::loadCalibration((fs::path(rows.front().sequence_dir) / "calib.yaml").string()).cameras)
+    cameras.push_back(camera.name);
+  const cv::Mat sheet = sim::makeContactSheet(rows, cameras, a.tile_width, a.labels);
   // JPEG at 85: small enough for the docs, no visible loss at the sheet's scale.
   if (!cv::imwrite(a.out, sheet, {cv::IMWRITE_JPEG_QUALITY, 85}))
     throw IoError("sheet: cannot write " + a.out);
@@ -156,6 +166,10 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
       "simulate", "Generate the synthetic garage dataset (images, labels, maps, poses, odometry)");
   cmd->add_option("--scenario", args->scenario,
                   "Scenario YAML (default: the built-in default scenario)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--calib", args->calib,
+                  "Rig calibration YAML to record with (2 to 6 cameras, any model and image "
+                  "size), in place of the scenario's rig")
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", args->out, "Output folder")->required();
   cmd->add_option("--seed", args->seed,

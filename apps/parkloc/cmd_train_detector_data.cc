@@ -31,7 +31,8 @@ void runDetectorData(const DetectorDataArgs& args) {
   options.view = args.view;
   if (!args.raw_band.empty()) {
     options.source = ocr::DetectorSource::kRawBand;
-    options.band = {args.raw_band[0], args.raw_band[1]};
+    options.band.top = args.raw_band[0];
+    options.band.bottom = args.raw_band[1];
   }
   options.frame_stride = args.stride;
   options.max_frames_per_sequence = args.max_frames;
@@ -67,7 +68,8 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
       ->capture_default_str();
   cmd->add_option("--raw-band", args->raw_band,
                   "Export the raw image's horizon band instead of the floor view: its top and "
-                  "bottom as fractions of the image height (e.g. 0.08 0.64)")
+                  "bottom edges as radians from the optical axis, negative above it (e.g. "
+                  "-0.9095 0.3078, the spotter's band)")
       ->expected(2);
   cmd->callback([args] { runDetectorData(*args); });
 });

@@ -60,9 +60,11 @@ void describe(OptionVisitor& v, ocr::DetectionOptions& o) {
   v.value("floor_read_expand_y", o.floor_read_expand_y, "... and by this across it");
   v.value("confident_box_score", o.confident_box_score,
           "floor boxes this sure are text found even when nothing reads them");
-  v.section("band", "the raw image's horizon band, as fractions of its height", [&] {
-    v.value("top", o.band.top, "first row");
-    v.value("bottom", o.band.bottom, "last row");
+  v.section("band", "the raw image's horizon band, as rays from the optical axis", [&] {
+    v.value("top", o.band.top, "radians from the axis of its top edge (negative: above)");
+    v.value("bottom", o.band.bottom, "radians from the axis of its bottom edge");
+    v.value("pixels_per_radian", o.band.pixels_per_radian,
+            "the band detector's training scale: a longer focal length is shrunk to it (0: never)");
   });
   v.section("band_db", "the band detector's post-processing", [&] { describe(v, o.band_db); });
   v.section("placed_reach", "under a pose, placed floor texts out to this view get windows",

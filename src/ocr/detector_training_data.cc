@@ -214,7 +214,13 @@ DetectorDataStats writeDetectorTrainingData(const std::vector<std::string>& sequ
           texts = viewTexts(*view, raw.size(), *labels, sequence.map(), options);
           writeImage(root / image_rel, view->render(raw));
         } else {
-          const cv::Rect rows = bandRect(options.band, raw.size());
+          const auto* rig_camera = sequence.rig().find(camera);
+          if (raw.cols != rig_camera->model.width || raw.rows != rig_camera->model.height)
+            throw InputError(fmt::format("{} camera '{}': image {}x{} differs from its "
+                                         "calibration's {}x{}",
+                                         sequence.dir(), camera, raw.cols, raw.rows,
+                                         rig_camera->model.width, rig_camera->model.height));
+          const cv::Rect rows = bandRect(options.band, rig_camera->model);
           texts = bandTexts(rows, *labels, options);
           writeImage(root / image_rel, raw(rows));
         }

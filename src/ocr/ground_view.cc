@@ -7,6 +7,9 @@
 
 namespace parkloc::ocr {
 
+// Everything here is in metres on the floor, and the view's pixels are `resolution` metres
+// whatever the camera's image size and lens: a number shows as large in every rig's view as the
+// floor detector learnt it; the calibration alone maps view pixels to raw ones.
 GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOptions& options)
     : camera_(camera), options_(options) {
   const Eigen::Vector3d axis = camera.vehicle_from_camera.linear().col(2);
@@ -38,8 +41,8 @@ GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOption
             roundUp32((hi.y() - lo.y()) / options.resolution));
   // Cropped to the rows and columns where the camera sees the floor, and a margin: the
   // detector's time goes with the view's area, and the floor under the vehicle's body and,
-  // for the front and rear cameras, beside it is hidden. The margin keeps a number that the
-  // body cuts off the view's edge, where the detector finds text worse.
+  // for the front and rear cameras, beside it is hidden. The margin (0.48 m, a number's length)
+  // keeps a number that the body cuts off the view's edge, where the detector finds text worse.
   cv::Mat seen(size(), CV_8U, cv::Scalar(0));
   for (int r = 0; r < seen.rows; ++r)
     for (int c = 0; c < seen.cols; ++c) {
@@ -47,7 +50,8 @@ GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOption
       const cv::Point2f raw(map_x_.at<float>(r, c), map_y_.at<float>(r, c));
       seen.at<uint8_t>(r, c) = seesTheFloor(raw, groundFromView(view_pixel));
     }
-  constexpr int kMarginPx = 32;
+  constexpr double kMarginM = 0.48;
+  const int kMarginPx = static_cast<int>(std::lround(kMarginM / options.resolution));
   const cv::Rect box = (cv::boundingRect(seen) + cv::Size(2 * kMarginPx, 2 * kMarginPx) -
                         cv::Point(kMarginPx, kMarginPx)) &
                        rect();

@@ -1,5 +1,6 @@
 #include "sim/contact_sheet.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -25,7 +26,7 @@ cv::Mat makeContactSheet(const std::vector<ContactSheetRow>& rows,
     for (size_t c = 0; c < cameras.size(); ++c) {
       const fs::path dir(rows[r].sequence_dir);
       cv::Mat img = cv::imread((dir / "images" / cameras[c] / (stem + ".jpg")).string());
-      if (img.empty()) img = cv::Mat(800, 1280, CV_8UC3, cv::Scalar::all(90));
+      if (img.empty()) img = cv::Mat(tile_height, tile_width, CV_8UC3, cv::Scalar::all(90));
       if (draw_labels) {
         const fs::path lp = dir / "labels" / cameras[c] / (stem + ".json");
         if (fs::exists(lp)) {
@@ -40,8 +41,15 @@ cv::Mat makeContactSheet(const std::vector<ContactSheetRow>& rows,
           }
         }
       }
-      cv::Mat tile;
-      cv::resize(img, tile, {tile_width, tile_height}, 0, 0, cv::INTER_AREA);
+      // Scaled to fit the tile with its aspect kept: rigs differ in image shape.
+      cv::Mat tile(tile_height, tile_width, CV_8UC3, cv::Scalar::all(30));
+      const double scale = std::min(static_cast<double>(tile_width) / img.cols,
+                                    static_cast<double>(tile_height) / img.rows);
+      const cv::Size fit(std::max(1, static_cast<int>(img.cols * scale)),
+                         std::max(1, static_cast<int>(img.rows * scale)));
+      cv::resize(img, tile(cv::Rect((tile_width - fit.width) / 2, (tile_height - fit.height) / 2,
+                                    fit.width, fit.height)),
+                 fit, 0, 0, cv::INTER_AREA);
       cv::putText(tile, cameras[c], {6, tile_height - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
                   cv::Scalar(0, 255, 255), 1, cv::LINE_AA);
       tile.copyTo(sheet(

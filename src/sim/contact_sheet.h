@@ -15,7 +15,7 @@ struct ContactSheetRow {
 };
 
 // Reads the images (and labels when `draw_labels`) of each row; each image is scaled to
-// `tile_width` pixels wide. Missing images are drawn grey.
+// fit a `tile_width` x 10/16 `tile_width` tile, its aspect kept. Missing images are drawn grey.
 cv::Mat makeContactSheet(const std::vector<ContactSheetRow>& rows,
                          const std::vector<std::string>& cameras, int tile_width = 480,
                          bool draw_labels = false);

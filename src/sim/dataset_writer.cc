@@ -26,6 +26,7 @@
 #include "sim/annotate.h"
 #include "sim/birds_eye.h"
 #include "sim/camera_effects.h"
+#include "sim/dataset_rig.h"
 #include "sim/drive.h"
 #include "sim/garage.h"
 #include "sim/garage_appearance.h"
@@ -163,7 +164,7 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
     throw IoError(
         fmt::format("simulate: cannot create {}: {}", (root / "sequences").string(), ec.message()));
 
-  const geometry::Rig rig = geometry::defaultRig();
+  const geometry::Rig rig = datasetRig(scenario, options);
   // A dataset that renders any drive with a look names every drive's, the clean ones too, so
   // that its evaluation has a subset per look; one without keeps the plain meta.json.
   bool any_look = false;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/rig.h"
 #include "sim/scenario.h"
 
 namespace parkloc::sim {
@@ -27,7 +28,10 @@ struct DatasetOptions {
   // under <sequence>/birdseye/images and birdseye/labels, at this many metres per pixel.
   bool birdseye = false;
   double birdseye_metres_per_pixel = 0.02;
+  // The rig the drives are recorded with, in place of the scenario's (Scenario::rig).
+  std::optional<geometry::Rig> rig;
 };
+
 
 // What was written. Rotation subsets follow the paper's Table 8: |rotation_deg| about 45
 // (30..60), 90 (60..120) and 180 (>= 150) degrees.

@@ -327,6 +327,7 @@ Scenario parseScenario(const std::string& yaml_text, const std::string& source_n
   read(root, "frame_rate", s.frame_rate, source_name);
   read(root, "odometry_rate", s.odometry_rate, source_name);
   read(root, "jpeg_quality", s.jpeg_quality, source_name);
+  read(root, "rig", s.rig, source_name);
   if (!(s.frame_rate >= 1.0 && s.frame_rate <= 60.0))
     throw InputError(source_name + ": field 'frame_rate' out of range");
   if (!(s.odometry_rate >= s.frame_rate && s.odometry_rate <= 1000.0))
@@ -363,7 +364,10 @@ Scenario loadScenario(const std::string& path) {
   if (!in) throw IoError("cannot open scenario file '" + path + "'");
   std::stringstream buffer;
   buffer << in.rdbuf();
-  return parseScenario(buffer.str(), path);
+  Scenario s = parseScenario(buffer.str(), path);
+  if (!s.rig.empty() && std::filesystem::path(s.rig).is_relative())
+    s.rig = (std::filesystem::path(path).parent_path() / s.rig).lexically_normal().string();
+  return s;
 }
 
 }  // namespace parkloc::sim

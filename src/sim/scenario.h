@@ -93,6 +93,10 @@ struct Scenario {
   double frame_rate = 10.0;     // camera frames per second
   double odometry_rate = 50.0;  // wheel odometry samples per second
   int jpeg_quality = 90;
+  // The rig's calibration file (io/calibration_yaml.h) the drives are recorded with; a
+  // relative path in a scenario file is relative to that file's folder. Empty: the default
+  // rig (geometry::defaultRig()).
+  std::string rig;
   std::vector<GarageSpec> garages;
 };
 

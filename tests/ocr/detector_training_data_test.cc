@@ -1,5 +1,7 @@
 #include "ocr/detector_training_data.h"
 
+#include "geometry/rig.h"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -130,8 +132,9 @@ TEST(DetectorTrainingData, WritesRawBandsWithTextOfEveryClass) {
     ++images;
     const cv::Mat band = cv::imread((root / "out" / image_rel).string(), cv::IMREAD_COLOR);
     ASSERT_FALSE(band.empty()) << image_rel;
-    // The rows of a 1280 x 800 image that bandRect gives: [64, 512).
-    const cv::Rect rows = bandRect(options.band, {1280, 800});
+    // The rows of a default-rig image that bandRect gives: [64, 512).
+    const cv::Rect rows = bandRect(options.band, geometry::defaultRig().cameras[0].model);
+    EXPECT_EQ(rows, cv::Rect(0, 64, 1280, 448));
     EXPECT_EQ(band.size(), rows.size()) << image_rel;
     std::ifstream labels(root / "out" / labels_rel);
     std::string line;
@@ -157,9 +160,11 @@ TEST(DetectorTrainingData, RejectsABandOutsideTheImage) {
   DetectorDataOptions options;
   options.out_dir = (fs::temp_directory_path() / "parkloc_band_data_unused").string();
   options.source = DetectorSource::kRawBand;
-  options.band = {0.7, 0.6};
+  options.band.top = 0.7;
+  options.band.bottom = 0.6;
   EXPECT_THROW(writeDetectorTrainingData({}, options), InputError);
-  options.band = {0.1, 1.2};
+  options.band.top = 0.1;
+  options.band.bottom = 1.6;
   EXPECT_THROW(writeDetectorTrainingData({}, options), InputError);
 }
 

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "geometry/rig.h"
+#include "scaled_camera.h"
 
 namespace parkloc::ocr {
 namespace {
@@ -149,6 +150,33 @@ TEST(GroundView, TheFloorBehindTheCarsBodyIsLeftOutAndTheViewCroppedToWhatShows)
     const cv::Point2f p = view.viewFromGround(ahead);
     EXPECT_TRUE(cv::Rect(cv::Point(0, 0), view.size()).contains(p)) << camera.name;
     EXPECT_TRUE(view.seesTheFloorAt(p)) << camera.name;
+  }
+}
+
+// A floor view is set in metres on the floor: the same lens and mounting imaged at twice the
+// resolution (every pixel length doubled) gives the same view, pixel for pixel, of the same
+// ground, sampled at twice the raw coordinates; only the view's resolution sets its size.
+TEST(GroundView, AViewDerivesFromTheCalibrationNotItsPixelCount) {
+  for (const auto& camera : geometry::defaultRig().cameras) {
+    geometry::RigCamera twice = camera;
+    twice.model = testing::scaledCamera(camera.model, 2);
+    const GroundView view(camera), view_twice(twice);
+    ASSERT_EQ(view.size(), view_twice.size()) << camera.name;
+    for (const cv::Point2f p : {cv::Point2f(0, 0), cv::Point2f(100.5f, 37), cv::Point2f(250, 190)}) {
+      EXPECT_LT((view.groundFromView(p) - view_twice.groundFromView(p)).norm(), 1e-9);
+      const auto raw = view.rawFromView(p), raw_twice = view_twice.rawFromView(p);
+      ASSERT_EQ(raw.has_value(), raw_twice.has_value());
+      if (!raw) continue;
+      EXPECT_NEAR(raw_twice->x, (raw->x + 0.5f) * 2 - 0.5f, 1e-2) << camera.name;
+      EXPECT_NEAR(raw_twice->y, (raw->y + 0.5f) * 2 - 0.5f, 1e-2) << camera.name;
+    }
+    // Half the metres per pixel: the same ground in twice the pixels a side (up to the 32 px
+    // rounding of the view's sides and the crop's margin).
+    GroundViewOptions fine;
+    fine.resolution = 0.0075;
+    const GroundView view_fine(twice, fine);
+    EXPECT_NEAR(view_fine.size().width, 2 * view.size().width, 96) << camera.name;
+    EXPECT_NEAR(view_fine.size().height, 2 * view.size().height, 96) << camera.name;
   }
 }
 

@@ -160,6 +160,24 @@ TEST_F(PpOcrSpotterTest, RejectsEmptyAndWronglyTypedImages) {
   EXPECT_THROW(spotter_->spot(cv::Mat(32, 32, CV_32FC3, cv::Scalar::all(0)), {}), InputError);
 }
 
+// An image whose size is not its camera's calibration is refused, naming the camera, for the
+// full frame and for regions alike: never read as a raw image of unknown geometry.
+TEST_F(PpOcrSpotterTest, AnImageOfAnotherSizeThanItsCalibrationIsAnInputError) {
+  SpotRequest request = leftFloorRequest({"A023"});
+  const cv::Mat resized(400, 640, CV_8UC3, cv::Scalar::all(90));
+  try {
+    spotter_->spot(resized, request);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "camera 'left': image 640x400 differs from its calibration's 1280x800");
+  }
+  request.regions.push_back({});
+  request.regions[0].polygon = {cv::Point2f(10, 10), {60, 10}, {60, 30}, {10, 30}};
+  EXPECT_THROW(spotter_->spot(resized, request), InputError);
+  // Without a camera the image is any image.
+  EXPECT_NO_THROW(spotter_->spot(resized, SpotRequest{}));
+}
+
 // Loading `models` throws an InputError that names `path`.
 void expectInputErrorNaming(const PpOcrModelPaths& models, const std::string& path) {
   PpOcrOptions options;
@@ -646,7 +664,7 @@ TEST(PpOcrSpotterModels, TheBandDetectorFindsTextAboveTheFloorInRawPixels) {
   cv::Mat image = testing::renderFloorText(*left, "A023", {2.0, 2.6}, M_PI, 1.0, 0.4).image;
   const cv::Mat sign = testing::renderTextLine("LIFT B2", 20, 10);
   const cv::Rect at(560, 64, sign.cols, sign.rows);
-  ASSERT_GE(at.y, bandRect(RawBand{}, image.size()).y);
+  ASSERT_GE(at.y, bandRect(RawBand{}, left->model).y);
   // Far beyond the floor view, or above the horizon: nothing of it in the floor view.
   const GroundView view(*left);
   const auto bottom = view.viewFromRaw(cv::Point2f(at.x + at.width / 2.f, at.br().y));
@@ -709,7 +727,7 @@ TEST(PpOcrSpotterModels, TheBandDetectorIsNotPaddleOcrsOwn) {
   cv::Mat image(800, 1280, CV_8UC3, cv::Scalar(110, 110, 110));
   const cv::Mat sign = testing::renderTextLine("B1", 40, 12);
   sign.copyTo(image(cv::Rect({600, 150}, sign.size())));
-  const cv::Mat rows = image(bandRect(RawBand{}, image.size()));
+  const cv::Mat rows = image(bandRect(RawBand{}, geometry::defaultRig().cameras[0].model));
   const cv::Mat a = stock.probability({rows})[0], b = band.probability({rows})[0];
   ASSERT_EQ(a.size(), b.size());
   EXPECT_GT(cv::norm(a, b, cv::NORM_L1) / a.total(), 1e-4);

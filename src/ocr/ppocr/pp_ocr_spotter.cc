@@ -1,5 +1,7 @@
 #include "ocr/ppocr/pp_ocr_spotter.h"
 
+#include <fmt/format.h>
+
 #include <opencv2/imgproc.hpp>
 #include <optional>
 
@@ -29,6 +31,14 @@ PpOcrSpotter::~PpOcrSpotter() = default;
 
 std::vector<TextInstance> PpOcrSpotter::spot(const cv::Mat& image, const SpotRequest& request) {
   requireBgrImage(image);
+  // SpotRequest::camera is the image's camera: an image of another size than its calibration
+  // is another camera's, or resized:
+  // the floor view and the corner fit on the ground plane would read garbage from it.
+  if (request.camera != nullptr && (request.camera->model.width != image.cols ||
+                                    request.camera->model.height != image.rows))
+    throw InputError(fmt::format("camera '{}': image {}x{} differs from its calibration's {}x{}",
+                                 request.camera->name, image.cols, image.rows,
+                                 request.camera->model.width, request.camera->model.height));
   return request.regions.empty() ? spotFullFrame(image, request) : spotRegions(image, request);
 }
 
@@ -50,9 +60,10 @@ std::vector<std::optional<TextInstance>> PpOcrSpotter::readInstances(
 std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                                                       const SpotRequest& request,
                                                       const geometry::RigCamera* camera,
-                                                      DetectorRole role, const FloorWindow* floor) {
-  const Detections found =
-      detect(image, role, *models_, options_.detection, request.detection_scale, request.max_reads);
+                                                      DetectorRole role, const FloorWindow* floor,
+                                                      float role_scale) {
+  const Detections found = detect(image, role, *models_, options_.detection,
+                                  request.detection_scale * role_scale, request.max_reads);
   ReadJobSet jobs;
   addDetectedJobs(jobs, found, role, request, floor, options_.map_prior,
                   options_.detection.confident_box_score);
@@ -68,9 +79,7 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
 std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
                                                       const SpotRequest& request) {
   const DetectionOptions& detection = options_.detection;
-  const bool ground = detection.view != FisheyeView::kRaw && request.camera != nullptr &&
-                      request.camera->model.width == image.cols &&
-                      request.camera->model.height == image.rows;
+  const bool ground = detection.view != FisheyeView::kRaw && request.camera != nullptr;
   std::vector<TextInstance> out;
   size_t on_floor = 0;                      // out[0, on_floor) came from the floor view
   std::vector<ClassWeights> floor_classes;  // their class weights
@@ -120,9 +129,10 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
   if (ground && models_->band_detector) {
     // The horizon band at full resolution; its crops are read from the band itself (a view
     // of the image, not a copy), corners fitted in the crop (pillar text is not on the floor).
-    const cv::Rect rows = bandRect(detection.band, image.size());
+    const cv::Rect rows = bandRect(detection.band, request.camera->model);
     std::vector<TextInstance> found =
-        detectAndRead(image(rows), request, nullptr, DetectorRole::kRawBand);
+        detectAndRead(image(rows), request, nullptr, DetectorRole::kRawBand, nullptr,
+                      static_cast<float>(bandScale(detection.band, request.camera->model)));
     for (TextInstance& inst : found)
       for (auto& p : inst.polygon) p.y += static_cast<float>(rows.y);
     appendUnseen(out, std::move(found));

@@ -65,10 +65,12 @@ class PpOcrSpotter : public TextSpotter {
   std::vector<TextInstance> readRegions(const cv::Mat& image, const SpotRequest& request);
 
   // Detection, read jobs, reading and refinement for one image of a detector role; `floor`:
-  // where a floor-view image lies (ocr/ppocr/floor_views.h).
+  // where a floor-view image lies (ocr/ppocr/floor_views.h); `role_scale`: the role's own
+  // scale of the image for its detector (bandScale), on top of the request's.
   std::vector<TextInstance> detectAndRead(const cv::Mat& image, const SpotRequest& request,
                                           const geometry::RigCamera* camera, DetectorRole role,
-                                          const FloorWindow* floor = nullptr);
+                                          const FloorWindow* floor = nullptr,
+                                          float role_scale = 1.f);
   // Reading, the one-end rule and refinement: an instance per reported job, in job order.
   std::vector<std::optional<TextInstance>> readInstances(const cv::Mat& image,
                                                          const std::vector<ReadJob>& jobs,

@@ -70,7 +70,9 @@ void replay(const BenchArgs& a, const config::Config& config, ocr::TextSpotter& 
         background ? "search worker" : "in the frame set", s.frames_dropped,
         s.frames + s.frames_dropped, s.pose_age_median_ms, s.pose_age_p95_ms, s.pose_age_p99_ms,
         s.pose_age_max_ms, ratio(s.pose_age_median_ms), ratio(s.pose_age_p99_ms),
-        s.first_pose_frame ? fmt::format("frame set {}", *s.first_pose_frame) : "none",
+        s.first_pose_frame ? fmt::format("frame set {}, out at {:.0f} ms", *s.first_pose_frame,
+                                         s.first_pose_output_ms)
+                           : "none",
         s.mean_position_error_m * 100.0, s.p95_position_error_m * 100.0);
   }
   if (paper_median > 0.0)

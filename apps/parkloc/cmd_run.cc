@@ -94,7 +94,9 @@ void run(const RunArgs& a) {
         "p99 {:.1f} ms  max {:.1f} ms; first pose at frame set {}\n",
         s.frames_dropped, s.frames + s.frames_dropped, s.pose_age_median_ms, s.pose_age_p95_ms,
         s.pose_age_p99_ms, s.pose_age_max_ms,
-        s.first_pose_frame ? fmt::format("{}", *s.first_pose_frame) : "none");
+        s.first_pose_frame ? fmt::format("{} (out {:.0f} ms after the first frame set)",
+                                         *s.first_pose_frame, s.first_pose_output_ms)
+                           : "none");
   if (s.frames_skipped_by_faults)
     std::cout << fmt::format("{} frame sets skipped by fault injection\n",
                              s.frames_skipped_by_faults);

@@ -132,7 +132,7 @@ struct Pipeline::Impl {
 
     // 2. Read planning: map-guided regions while tracking, the full frame now and then.
     const Stopwatch planning_time;
-    ReadPlan plan = reading.plan(tracking, ekf, level);
+    ReadPlan plan = reading.plan(tracking, ekf, level, worker != nullptr);
     if (worker) handOverFullFrames(frame, plan, result);
     result.timings.roi_ms += planning_time.elapsedMs();
 

@@ -170,6 +170,7 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
     if (result.has_pose && !summary.first_fix_time) {
       summary.first_fix_time = t;
       summary.first_pose_frame = i;
+      summary.first_pose_output_ms = (t - timestamps.front()) * 1000.0 + age_ms;
     }
     if (options.realtime && result.has_pose) summary.pose_age_ms.push_back(age_ms);
     if (summary.first_fix_time) {

@@ -65,8 +65,10 @@ struct RunSummary {
   double pose_age_p95_ms = 0.0;
   double pose_age_p99_ms = 0.0;
   double pose_age_max_ms = 0.0;
-  // The first frame set with a pose (index in the drive), and its age.
+  // The first frame set with a pose (index in the drive), and (realtime) when that pose came
+  // out, milliseconds after the first frame set's release.
   std::optional<size_t> first_pose_frame;
+  double first_pose_output_ms = 0.0;
 };
 
 // The ground-truth pose at time t, linearly interpolated; empty outside the trajectory.

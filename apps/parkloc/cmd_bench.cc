@@ -1,7 +1,11 @@
 // parkloc bench SEQUENCE_DIR: latency per four-camera frame set of the full pipeline and, in
-// the same run, of the paper's pipeline (full-frame OCR on all four cameras every frame).
+// the same run, of the paper's pipeline (full-frame OCR on all four cameras every frame); then
+// the drive replayed at its recorded rate (`parkloc run --realtime`), full-frame spotting
+// inside the frame set and on the search worker: dropped frame sets and pose ages, also as
+// ratios to the paper pipeline's median latency (the machine's speed cancels out).
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <iostream>
 
 #include "apps/parkloc/command.h"
@@ -10,6 +14,8 @@
 #include "eval/evaluation.h"
 #include "eval/report.h"
 #include "eval/tables.h"
+#include "io/sequence.h"
+#include "run/sequence_runner.h"
 
 namespace {
 
@@ -20,9 +26,58 @@ struct BenchArgs {
   int max_frames = 0;
   std::string out;
   bool no_paper = false;
+  bool no_replay = false;
   bool quiet = false;
   app::ConfigArgs config;
 };
+
+// The drive at its recorded rate, synchronous and with the search worker.
+void replay(const BenchArgs& a, const config::Config& config, ocr::TextSpotter& spotter,
+            const eval::EvaluationReport& report) {
+  double paper_median = 0.0;
+  for (const eval::VariantResult& v : report.variants)
+    if (v.key == "paper_spotting") paper_median = v.latency.total_ms.median;
+  const io::Sequence sequence(a.sequence);
+  const std::filesystem::path out =
+      a.out.empty() ? std::filesystem::temp_directory_path() / "parkloc-bench-replay"
+                    : std::filesystem::path(a.out);
+  std::cout << "\nreal-time replay at the recorded rate (pose age: output time less capture "
+               "time; ratios to the paper pipeline's median)\n\n"
+               "| full frames | dropped | age median | p95 | p99 | max | median / paper | "
+               "p99 / paper | first pose | error mean | error p95 |\n"
+               "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  std::unique_ptr<ocr::TextSpotter> worker_spotter;
+  for (const bool background : {false, true}) {
+    run::RunOptions options;
+    options.pipeline = config.pipeline;
+    options.pipeline.realtime.background_search = background;
+    options.realtime = true;
+    options.max_frames = static_cast<size_t>(a.max_frames);
+    options.out_dir = (out / (background ? "replay_worker" : "replay_synchronous")).string();
+    if (background && !worker_spotter) {
+      config::Config worker_config = config;
+      worker_config.pipeline.realtime.background_search = true;
+      worker_spotter = app::makeWorkerSpotter(worker_config);
+    }
+    const run::RunSummary s =
+        run::runSequence(sequence, &spotter, options, background ? worker_spotter.get() : nullptr);
+    const auto ratio = [&](double ms) {
+      return paper_median > 0.0 ? fmt::format("{:.3f}", ms / paper_median) : std::string("-");
+    };
+    std::cout << fmt::format(
+        "| {} | {} of {} | {:.1f} ms | {:.1f} ms | {:.1f} ms | {:.1f} ms | {} | {} | {} | "
+        "{:.2f} cm | {:.2f} cm |\n",
+        background ? "search worker" : "in the frame set", s.frames_dropped,
+        s.frames + s.frames_dropped, s.pose_age_median_ms, s.pose_age_p95_ms, s.pose_age_p99_ms,
+        s.pose_age_max_ms, ratio(s.pose_age_median_ms), ratio(s.pose_age_p99_ms),
+        s.first_pose_frame ? fmt::format("frame set {}, out at {:.0f} ms", *s.first_pose_frame,
+                                         s.first_pose_output_ms)
+                           : "none",
+        s.mean_position_error_m * 100.0, s.p95_position_error_m * 100.0);
+  }
+  if (paper_median > 0.0)
+    std::cout << fmt::format("paper pipeline median {:.1f} ms per frame set\n", paper_median);
+}
 
 void runBench(const BenchArgs& a) {
   const config::Config config = a.config.load();
@@ -39,8 +94,9 @@ void runBench(const BenchArgs& a) {
   options.title = "parkloc bench";
   options.dataset = a.sequence;
   options.command = "parkloc bench " + a.sequence;
+  auto worker_spotter = app::makeWorkerSpotter(config);
   const eval::EvaluationReport report =
-      eval::evaluateSequences({a.sequence}, spotter.get(), options);
+      eval::evaluateSequences({a.sequence}, spotter.get(), options, worker_spotter.get());
   progress.finish();
   std::cout << fmt::format("{} frame sets of {}, {} cameras each, engine {}\n", report.main.frames,
                            a.sequence, 4, spotter->name());
@@ -56,6 +112,7 @@ void runBench(const BenchArgs& a) {
     eval::writeReport(report, a.out);
     std::cout << "wrote " << a.out << "/report.html, results.json, results.md\n";
   }
+  if (!a.no_replay) replay(a, config, *spotter, report);
 }
 
 const bool registered = app::registerCommand([](CLI::App& parent) {
@@ -68,6 +125,8 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--out", args->out, "Also write a report folder");
   cmd->add_flag("--no-paper", args->no_paper, "Only the full pipeline");
+  cmd->add_flag("--no-replay", args->no_replay,
+                "Skip the real-time replays (the drive at its recorded rate, twice)");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   args->config.addTo(cmd);
   cmd->callback([args] { runBench(*args); });

@@ -55,8 +55,9 @@ void runDemo(const DemoArgs& a) {
   options.title = "parkloc demo";
   options.dataset = data_dir + " (built-in demo garage)";
   options.command = "parkloc demo --out " + a.out + (a.paper ? " --paper" : "");
-  const eval::EvaluationReport report =
-      eval::evaluateSequences(eval::splitSequences(data_dir, "test"), spotter.get(), options);
+  auto worker_spotter = app::makeWorkerSpotter(config);
+  const eval::EvaluationReport report = eval::evaluateSequences(
+      eval::splitSequences(data_dir, "test"), spotter.get(), options, worker_spotter.get());
   progress.finish();
   eval::writeReport(report, a.out);
 

@@ -25,6 +25,7 @@ struct RunArgs {
   double map_noise = 0.0;
   uint64_t map_noise_seed = 0;
   bool quiet = false;
+  bool realtime = false, background_search = false;
   std::vector<std::string> inject;
   parkloc::app::ConfigArgs config;
 };
@@ -49,6 +50,8 @@ void run(const RunArgs& a) {
   options.map_noise = {a.map_noise, a.map_noise_seed};
   options.out_dir = a.out;
   options.video_path = a.video;
+  options.realtime = a.realtime;
+  if (a.background_search) options.pipeline.realtime.background_search = true;
   if (!a.inject.empty()) {
     options.faults = run::parseFaults(a.inject);
     std::cerr << "parkloc: injecting faults:\n" << run::describeFaults(options.faults) << "\n";
@@ -56,13 +59,18 @@ void run(const RunArgs& a) {
   if (!a.paper && !a.no_odometry && sequence.odometry().empty())
     std::cerr << "parkloc: warning: no odometry: the filter predicts a random walk\n";
 
-  std::unique_ptr<ocr::TextSpotter> spotter;
+  std::unique_ptr<ocr::TextSpotter> spotter, worker_spotter;
   if (!a.oracle) spotter = app::makeSpotter(config);
+  if (!a.oracle) {
+    config::Config worker_config = config;
+    worker_config.pipeline = options.pipeline;
+    worker_spotter = app::makeWorkerSpotter(worker_config);
+  }
   app::ProgressLine progress(a.quiet);
   options.progress = [&](size_t done, size_t total) {
     progress({"run " + sequence.dir(), done, total});
   };
-  const auto s = run::runSequence(sequence, spotter.get(), options);
+  const auto s = run::runSequence(sequence, spotter.get(), options, worker_spotter.get());
   progress.finish();
 
   std::cout << fmt::format("frames {}  with pose {}  first fix {}\n", s.frames, s.frames_with_pose,
@@ -80,6 +88,15 @@ void run(const RunArgs& a) {
         s.frames_over_half_metre, s.mean_yaw_error_deg);
   std::cout << fmt::format("latency per frame set median {:.2f} ms  p99 {:.2f} ms\n",
                            s.latency_median_ms, s.latency_p99_ms);
+  if (a.realtime)
+    std::cout << fmt::format(
+        "real time: {} frame sets dropped of {}; pose age median {:.1f} ms  p95 {:.1f} ms  "
+        "p99 {:.1f} ms  max {:.1f} ms; first pose at frame set {}\n",
+        s.frames_dropped, s.frames + s.frames_dropped, s.pose_age_median_ms, s.pose_age_p95_ms,
+        s.pose_age_p99_ms, s.pose_age_max_ms,
+        s.first_pose_frame ? fmt::format("{} (out {:.0f} ms after the first frame set)",
+                                         *s.first_pose_frame, s.first_pose_output_ms)
+                           : "none");
   if (s.frames_skipped_by_faults)
     std::cout << fmt::format("{} frame sets skipped by fault injection\n",
                              s.frames_skipped_by_faults);
@@ -117,6 +134,11 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
       ->check(CLI::Range(0.0, parkloc::map::kMaxPositionSigmaM));
   cmd->add_option("--map-noise-seed", args->map_noise_seed, "Seed of the map perturbation");
   cmd->add_flag("--quiet", args->quiet, "No progress line");
+  cmd->add_flag("--realtime", args->realtime,
+                "Feed the frame sets at their recorded rate; a frame set that comes while the "
+                "previous one runs is dropped; report dropped frame sets and pose ages");
+  cmd->add_flag("--background-search", args->background_search,
+                "Full-frame spotting on a worker thread (pipeline.realtime.background_search)");
   cmd->add_option("--inject", args->inject,
                   "Inject faults, e.g. dark:front:3-8,drop:0.1 (see run/fault_injection.h)")
       ->allow_extra_args(false);

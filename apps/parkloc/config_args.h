@@ -3,6 +3,7 @@
 // from the configuration (data/config/default.yaml, config/config.h), the command line keeps
 // what changes per run.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -33,6 +34,16 @@ struct ConfigArgs {
 
 inline std::unique_ptr<ocr::TextSpotter> makeSpotter(const config::Config& config) {
   return std::make_unique<ocr::PpOcrSpotter>(config::spotterOptions(config));
+}
+
+// The search worker's own spotter (localize/search_worker.h), with the worker's inference
+// threads; made after makeSpotter's, whose thread counts size ONNX Runtime's shared pool.
+// Null when the configuration runs no search worker.
+inline std::unique_ptr<ocr::TextSpotter> makeWorkerSpotter(const config::Config& config) {
+  if (!config.pipeline.realtime.background_search || config.pipeline.paper_mode) return nullptr;
+  ocr::PpOcrOptions options = config::spotterOptions(config);
+  options.onnx.intra_op_threads = std::max(1, config.pipeline.realtime.worker_inference_threads);
+  return std::make_unique<ocr::PpOcrSpotter>(options);
 }
 
 }  // namespace parkloc::app

@@ -182,6 +182,21 @@ void describe(OptionVisitor& v, localize::PaperPipelineOptions& o) {
           "motion_direction: heading from travel once the vehicle has moved this far");
 }
 
+void describe(OptionVisitor& v, localize::RealtimeOptions& o) {
+  v.value("background_search", o.background_search,
+          "full-frame spotting on a worker thread, fused at its capture time when ready; "
+          "false: the frame set that carries it waits");
+  v.value("wait_for_worker", o.wait_for_worker,
+          "fuse the worker's texts exactly fuse_after_frames later, waiting for it "
+          "(reproducible); false: when ready (parkloc run --realtime)");
+  v.value("fuse_after_frames", o.fuse_after_frames,
+          "wait_for_worker: frame sets between the images and the fusion of their texts");
+  v.value("worker_nice", o.worker_nice,
+          "the worker thread's nice value: the critical path wins the cores");
+  v.value("worker_inference_threads", o.worker_inference_threads,
+          "inference threads of the worker's own spotter (1: all on the worker thread)");
+}
+
 }  // namespace
 
 void describe(OptionVisitor& v, localize::PipelineOptions& o) {
@@ -202,6 +217,8 @@ void describe(OptionVisitor& v, localize::PipelineOptions& o) {
   v.section("tracking", "the track's lifecycle: first fix, loss, re-localisation",
             [&] { describe(v, o.tracking); });
   v.section("paper_pipeline", "the paper's positioning", [&] { describe(v, o.paper_pipeline); });
+  v.section("realtime", "full-frame spotting off the frame set's critical path",
+            [&] { describe(v, o.realtime); });
 }
 
 }  // namespace parkloc::config

@@ -19,6 +19,9 @@ LatencyReport latencyReport(const std::vector<FrameTiming>& frames) {
     }
   }
   report.total_ms = summarize(total);
+  for (const FrameTiming& f : frames)
+    if (f.worker_ms > 0.0) report.worker_samples_ms.push_back(f.worker_ms);
+  if (!report.worker_samples_ms.empty()) report.worker_ms = summarize(report.worker_samples_ms);
   for (const std::string& stage : stages) {
     report.stage_ms[stage] = summarize(report.samples_ms[stage]);
   }

@@ -375,6 +375,9 @@ Table latencyTable(const std::vector<VariantResult>& variants) {
     };
     for (const auto& [stage, s] : v.latency.stage_ms) row(stage, s);
     row("total", v.latency.total_ms);
+    // Not part of the total: the frame sets do not wait for it.
+    if (!v.latency.worker_samples_ms.empty())
+      row("search worker, off the critical path (per job)", v.latency.worker_ms);
   }
   return t;
 }

@@ -102,8 +102,20 @@ struct StageTimings {
   double filter_ms = 0.0;       // EKF predict + update
   double total_ms = 0.0;
   // CPU time of the whole process during process(), all threads (OCR engine threads
-  // included), milliseconds: unlike wall time it does not grow with the machine's load.
+  // included, and the search worker's while it runs meanwhile), milliseconds: unlike wall
+  // time it does not grow with the machine's load.
   double cpu_ms = 0.0;
+};
+
+// Full-frame texts spotted on the search worker (search_worker.h) and fused in this frame
+// set, at the time their images were captured (late_fusion.h).
+struct BackgroundFusion {
+  double capture_timestamp = 0.0;  // the frame set whose images they come from
+  std::vector<CameraResult> cameras;  // rig order; the worker's cameras hold its texts
+  std::vector<Association> associations;
+  std::optional<geometry::Pose2> measurement;  // the fix they gave, at the capture time
+  double worker_ms = 0.0;      // the worker's wall time on them
+  double worker_cpu_ms = 0.0;  // ... and its CPU time
 };
 
 struct FrameResult {
@@ -128,6 +140,10 @@ struct FrameResult {
 
   std::vector<CameraResult> cameras;
   std::vector<Association> associations;
+  // Cameras whose full frame went to the search worker this frame set (their CameraResult
+  // holds only what the critical path spotted), and what the worker gave back and was fused.
+  std::vector<std::string> background_cameras;
+  std::optional<BackgroundFusion> background;
   StageTimings timings;
   std::vector<std::string> warnings;
 };

@@ -1,8 +1,12 @@
 #include "localize/pipeline.h"
 
+#include <algorithm>
+
 #include "localize/capture_time.h"
 #include "localize/floor_heights.h"
+#include "localize/late_fusion.h"
 #include "localize/search_window.h"
+#include "localize/serialized_spotter.h"
 #include "localize/spotting.h"
 #include "localize/stage_clock.h"
 
@@ -14,6 +18,7 @@ PipelineOptions PipelineOptions::paper(PipelineOptions o) {
   o.reading.map_guided = false;
   o.reading.full_frame_interval = 1;
   o.association.use_pillar_text = false;
+  o.realtime.background_search = false;  // every frame set waits for its full frames
   return o;
 }
 
@@ -25,6 +30,22 @@ struct Pipeline::Impl {
   ocr::TextSpotter* spotter = nullptr;
   FloorHeights floors;
 
+  // The search worker (options.realtime.background_search) and what the pipeline knows of
+  // the job in its hand: the frame set's filter, rig and travel when its images were taken.
+  std::unique_ptr<SerializedSpotter> shared_spotter;  // without a worker spotter of its own
+  std::unique_ptr<SearchWorker> worker;
+  struct PendingSearch {
+    long frame = -1;
+    PoseEkf ekf;  // predicted to the frame set, before its measurement
+    geometry::Rig rig;
+    geometry::Pose2 travelled;
+  };
+  std::optional<PendingSearch> pending;
+  long frame_index = -1;
+  // The vehicle's path so far in the frame of the first frame set (odometry, through the
+  // filter's prediction when it runs): the motion between two frame sets' poses on it.
+  geometry::Pose2 travelled;
+
   // The stages (each holds its own state) and the track they share.
   PoseEkf ekf;
   MotionPrediction motion;
@@ -35,7 +56,8 @@ struct Pipeline::Impl {
   TrackLifecycle lifecycle;
   PaperPipeline paper;
 
-  Impl(geometry::Rig r, map::HdMap m, const PipelineOptions& o, ocr::TextSpotter* s)
+  Impl(geometry::Rig r, map::HdMap m, const PipelineOptions& o, ocr::TextSpotter* s,
+       ocr::TextSpotter* worker_spotter)
       : nominal_rig(r),
         rig(std::move(r)),
         map(std::move(m)),
@@ -52,10 +74,21 @@ struct Pipeline::Impl {
         lifecycle(o.tracking,
                   searchWindowFrames(o.reading.search_cameras_per_frame, rig.cameras.size())),
         paper(rig, map, o.paper_pipeline, o.paper_modules) {
+    if (o.realtime.background_search && !o.paper_mode && (s || worker_spotter)) {
+      if (!worker_spotter) {
+        shared_spotter = std::make_unique<SerializedSpotter>(s);
+        spotter = worker_spotter = shared_spotter.get();
+      }
+      worker = std::make_unique<SearchWorker>(worker_spotter, o.realtime.worker_nice);
+    }
     reset();
   }
 
   void reset() {
+    if (worker) worker->wait();
+    pending.reset();
+    frame_index = -1;
+    travelled = geometry::Pose2();
     ekf.reset();
     motion.reset();
     reading.reset();
@@ -74,20 +107,33 @@ struct Pipeline::Impl {
 
     // 1. Motion prediction: odometry up to this frame set, the filter predicted to it; the
     //    search window's texts follow the vehicle.
+    ++frame_index;
     const Stopwatch motion_time;
+    const bool predicted_before = ekf.initialised();
+    const geometry::Pose2 pose_before = ekf.pose();
     const FrameMotion moved = motion.advance(frame, ekf, result.warnings);
     if (options.motion.use_capture_times)
       rig = rigAtFrameTime(nominal_rig, frame, motion.heldOdometry());
+    // The path: the filter's prediction (odometry with its bias and scale estimates), else
+    // the odometry alone.
+    if (predicted_before && ekf.initialised())
+      travelled = travelled * (pose_before.inverse() * ekf.pose());
+    else if (const auto step = moved.sincePreviousFrame())
+      travelled = travelled * *step;
     level.predict(frame.timestamp);
     if (options.paper_mode) paper.integrateOdometryYaw(moved);
     if (!lifecycle.searchWindow().empty())
       lifecycle.searchWindow().advance(moved.sincePreviousFrame());
     result.timings.filter_ms += motion_time.elapsedMs();
+
+    // The search worker's texts, when their turn has come (late_fusion.h).
+    if (worker) collectSearch(result);
     const bool tracking = !options.paper_mode && isTracking(ekf, options.tracking);
 
     // 2. Read planning: map-guided regions while tracking, the full frame now and then.
     const Stopwatch planning_time;
-    ReadPlan plan = reading.plan(tracking, ekf, level);
+    ReadPlan plan = reading.plan(tracking, ekf, level, worker != nullptr);
+    if (worker) handOverFullFrames(frame, plan, result);
     result.timings.roi_ms += planning_time.elapsedMs();
 
     // 3. Spotting, camera by camera in rig order.
@@ -121,6 +167,124 @@ struct Pipeline::Impl {
     return result;
   }
 
+  // The full frames of the plan go to the search worker, when it is free; either way the
+  // critical path spots none of them.
+  void handOverFullFrames(const FrameInput& frame, ReadPlan& plan, FrameResult& result) {
+    // A full frame due while the worker is still busy is skipped: the schedule comes back to
+    // the camera a few frame sets later.
+    const bool free = !worker->busy();
+    SearchJob job;
+    job.frame = frame_index;
+    job.timestamp = frame.timestamp;
+    for (size_t c = 0; c < nominal_rig.cameras.size(); ++c) {
+      if (!free || !plan.choice.full_frame[c]) continue;
+      const auto& name = nominal_rig.cameras[c].name;
+      for (const CameraInput& input : frame.cameras)
+        if (input.camera == name && !input.instances && !input.image.empty() &&
+            input.image.cols == nominal_rig.cameras[c].model.width &&
+            input.image.rows == nominal_rig.cameras[c].model.height) {
+          job.cameras.push_back(c);
+          job.images.push_back(input.image.clone());  // the caller may reuse its buffers
+          job.requests.push_back(reading.request(c, plan, ekf.pose()));
+        }
+    }
+    std::fill(plan.choice.full_frame.begin(), plan.choice.full_frame.end(), false);
+    if (job.cameras.empty()) return;
+    for (size_t c : job.cameras) result.background_cameras.push_back(nominal_rig.cameras[c].name);
+    pending = PendingSearch{frame_index, ekf, rig, travelled};
+    worker->submit(std::move(job));
+  }
+
+  // The worker's result: waited for at its fixed turn (wait_for_worker), else taken when done.
+  void collectSearch(FrameResult& result) {
+    if (!pending) return;
+    std::optional<SearchResult> done;
+    const RealtimeOptions& o = options.realtime;
+    if (o.wait_for_worker) {
+      if (frame_index - pending->frame < std::max(1, o.fuse_after_frames)) return;
+      done = worker->wait();
+    } else {
+      done = worker->poll();
+    }
+    if (!done) return;
+    fuseSearch(*done, result);
+    pending.reset();
+  }
+
+  // The worker's texts as they would have been fused at their capture time: associated
+  // against the filter's prediction then, each camera where it stood then, and the fix
+  // carried to the present by the motion since (late_fusion.h).
+  void fuseSearch(const SearchResult& done, FrameResult& result) {
+    const PendingSearch& then = *pending;
+    const geometry::Pose2 motion_since = then.travelled.inverse() * travelled;
+    FrameResult late;
+    late.timestamp = result.timestamp;
+    for (const auto& camera : nominal_rig.cameras) {
+      CameraResult c;
+      c.camera = camera.name;
+      c.full_frame = false;
+      late.cameras.push_back(std::move(c));
+    }
+    for (size_t k = 0; k < done.cameras.size(); ++k) {
+      CameraResult& c = late.cameras[done.cameras[k]];
+      c.full_frame = true;
+      if (!done.errors[k].empty()) {
+        c.image_ok = false;
+        result.warnings.push_back("camera '" + c.camera + "': " + done.errors[k]);
+      }
+      c.instances = done.instances[k];
+    }
+    const bool tracking_then = isTracking(then.ekf, options.tracking);
+    if (tracking_then != isTracking(ekf, options.tracking)) {
+      // The track started or was lost meanwhile: the prediction the texts would have been
+      // gated against is not the filter's any more.
+      result.warnings.push_back("full-frame texts of an earlier frame set dropped: the track "
+                                "changed state while they were spotted");
+      return;
+    }
+    const geometry::Rig current_rig = rig;
+    rig = then.rig;  // the stages read the rig they were built with
+    const Stopwatch association_time;
+    const std::vector<bool> supplied(nominal_rig.cameras.size(), false);
+    AssociatedObservations seen = associator.associate(late.cameras, supplied, tracking_then,
+                                                       level, then.ekf, late.associations);
+    level.update(late.cameras, late.associations, late.warnings);
+    reading.noteOutcomes(late);
+    seen.accepted = selectForModules(std::move(seen.accepted), options.paper_modules);
+    seen.gated = selectForModules(std::move(seen.gated), options.paper_modules);
+    result.timings.association_ms += association_time.elapsedMs();
+
+    const Stopwatch solve_time;
+    FrameFixes fixes;
+    if (tracking_then) {
+      fixes = measurement.whileTracking(seen.accepted, seen.gated, then.ekf, late);
+      lifecycle.searchWindow().clear();
+    } else {
+      // The search window holds its texts in the vehicle frame now: back to then and forth.
+      lifecycle.searchWindow().advance(motion_since.inverse());
+      fixes = measurement.whileSearching(seen.accepted, lifecycle.searchWindow(), late);
+      lifecycle.searchWindow().advance(motion_since);
+    }
+    rig = current_rig;
+    result.timings.solver_ms += solve_time.elapsedMs();
+
+    const Stopwatch filter_time;
+    lifecycle.apply(carryFixes(fixes, motion_since), tracking_then, ekf, motion, late);
+    result.timings.filter_ms += filter_time.elapsedMs();
+    if (late.status == TrackingStatus::kOk) result.status = TrackingStatus::kOk;
+    result.reinitialised = result.reinitialised || late.reinitialised;
+    for (auto& w : late.warnings) result.warnings.push_back(std::move(w));
+
+    BackgroundFusion fused;
+    fused.capture_timestamp = done.timestamp;
+    fused.cameras = std::move(late.cameras);
+    fused.associations = std::move(late.associations);
+    fused.measurement = late.measurement;
+    fused.worker_ms = done.wall_ms;
+    fused.worker_cpu_ms = done.cpu_ms;
+    result.background = std::move(fused);
+  }
+
   // The SE(2) solve, then the track's lifecycle.
   void measureParkloc(const AssociatedObservations& seen, FrameResult& result) {
     const Stopwatch solve_time;
@@ -139,8 +303,9 @@ struct Pipeline::Impl {
 };
 
 Pipeline::Pipeline(geometry::Rig rig, map::HdMap map, PipelineOptions options,
-                   ocr::TextSpotter* spotter)
-    : impl_(std::make_unique<Impl>(std::move(rig), std::move(map), options, spotter)) {}
+                   ocr::TextSpotter* spotter, ocr::TextSpotter* worker_spotter)
+    : impl_(std::make_unique<Impl>(std::move(rig), std::move(map), options, spotter,
+                                   worker_spotter)) {}
 Pipeline::~Pipeline() = default;
 Pipeline::Pipeline(Pipeline&&) noexcept = default;
 Pipeline& Pipeline::operator=(Pipeline&&) noexcept = default;

@@ -7,6 +7,9 @@
 //   3. spotting            the injected ocr::TextSpotter, camera by camera (spotting.h)
 //   4. level and association   the level estimate (level_estimate.h); exact matching, AFM box plot,
 //                          pose gate, reading order (association.h); MCRP / MCAP (paper_modules.h)
+//   (background) full frames go to the search worker (search_worker.h) and their texts
+//                          come back to stage 4 a frame set or more later, fused at their
+//                          capture time (late_fusion.h)
 //   5. measurement         parkloc: SE(2) robust least squares on every polygon corner
 //                          (parkloc_measurement.h), then the track's lifecycle: EKF update,
 //                          first fix, loss, re-localisation (track_lifecycle.h);
@@ -31,6 +34,7 @@
 #include "localize/pose_ekf.h"
 #include "localize/pose_solver.h"
 #include "localize/read_planning.h"
+#include "localize/search_worker.h"
 #include "localize/track_lifecycle.h"
 #include "map/hd_map.h"
 #include "ocr/text_spotter.h"
@@ -59,6 +63,7 @@ struct PipelineOptions {
   MeasurementOptions measurement;       // what a fix measures (parkloc_measurement.h)
   TrackingOptions tracking;             // the track's lifecycle (track_lifecycle.h)
   PaperPipelineOptions paper_pipeline;  // the paper's positioning (paper_pipeline.h)
+  RealtimeOptions realtime;             // full frames off the critical path (search_worker.h)
 
   // The paper's pipeline on `base`'s other options: paper_mode on, no odometry, full-frame
   // spotting every frame set, parking numbers only.
@@ -70,9 +75,11 @@ class Pipeline {
  public:
   // `spotter` may be null when every frame brings its instances (oracle); a frame that
   // needs spotting without a spotter gets a warning and no instances. The rig and map
-  // are copied; the spotter must outlive the pipeline.
+  // are copied; the spotters must outlive the pipeline. `worker_spotter` spots the full
+  // frames on the search worker (options.realtime.background_search); null: `spotter`,
+  // shared behind a mutex (serialized_spotter.h).
   Pipeline(geometry::Rig rig, map::HdMap map, PipelineOptions options = {},
-           ocr::TextSpotter* spotter = nullptr);
+           ocr::TextSpotter* spotter = nullptr, ocr::TextSpotter* worker_spotter = nullptr);
   ~Pipeline();
   Pipeline(Pipeline&&) noexcept;
   Pipeline& operator=(Pipeline&&) noexcept;
@@ -83,7 +90,8 @@ class Pipeline {
   // previous one is processed without prediction and reported in warnings.
   FrameResult process(const FrameInput& frame);
 
-  // Forgets the track and the AFM queue (a new drive).
+  // Forgets the track and the AFM queue (a new drive); waits for the search worker's job in
+  // hand and drops it.
   void reset();
 
   const PipelineOptions& options() const;

@@ -31,7 +31,8 @@ void ReadPlanner::reset() {
   last_read_attempt_.clear();
 }
 
-ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimate& level) {
+ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimate& level,
+                           bool full_frames_elsewhere) {
   ++frame_index_;
   const size_t n_cameras = rig_.cameras.size();
   ReadPlan plan;
@@ -52,8 +53,9 @@ ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimat
     for (const SharedPlace& p : places) nearby.push_back(p.landmark);
   }
   auto& candidates = plan.regions;
+  const bool sweeping = plan.choice.sweeping && !full_frames_elsewhere;
   for (size_t c = 0; c < n_cameras; ++c) {
-    if (plan.choice.full_frame[c]) continue;
+    if (plan.choice.full_frame[c] && !full_frames_elsewhere) continue;
     candidates[c] = predictRegionCandidates(rig_.cameras[c], nearby, floors_, ekf.pose(),
                                             ekf.covariance(), roi_options_);
     for (RegionCandidate& r : candidates[c])
@@ -66,7 +68,7 @@ ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimat
       }
   }
   RegionBudgetOptions budget;
-  budget.max_regions = plan.choice.sweeping ? std::min(options_.max_regions_per_frame,
+  budget.max_regions = sweeping ? std::min(options_.max_regions_per_frame,
                                                        options_.max_regions_with_full_frame)
                                             : options_.max_regions_per_frame;
   if (options_.max_regions_per_frame <= 0)
@@ -86,7 +88,7 @@ ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimat
   }
   candidates = std::move(kept);
   // A frame set that sweeps a camera on the full frame spends its reads there.
-  if (options_.reread_interval_frames > 0) chooseReadsAndFits(candidates, plan.choice.sweeping);
+  if (options_.reread_interval_frames > 0) chooseReadsAndFits(candidates, sweeping);
   return plan;
 }
 

@@ -161,7 +161,11 @@ class ReadPlanner {
   // The plan of the next frame set at the filter's predicted pose. `tracking`: the filter's
   // pose is good enough to predict regions; `level`: the levels to look for (the decided
   // one, else every level, a shared place read once for any of its texts).
-  ReadPlan plan(bool tracking, const PoseEkf& ekf, const LevelEstimate& level);
+  // `full_frames_elsewhere`: the full frames are spotted off the frame set's critical path
+  // (search_worker.h), so a sweep's camera gets its regions as well and a sweep costs the
+  // frame set none of its reads.
+  ReadPlan plan(bool tracking, const PoseEkf& ekf, const LevelEstimate& level,
+                bool full_frames_elsewhere = false);
 
   // Camera c's request (its regions are moved out of the plan).
   ocr::SpotRequest request(size_t c, ReadPlan& plan, const geometry::Pose2& pose) const;

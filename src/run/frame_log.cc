@@ -75,6 +75,23 @@ std::string frameResultToJson(const localize::FrameResult& r) {
                      {"filter", r.timings.filter_ms},
                      {"total", r.timings.total_ms},
                      {"cpu", r.timings.cpu_ms}};
+  // The search worker (localize/search_worker.h): the full frames handed to it, and what it
+  // gave back and was fused in this frame set, with its own time (off the critical path).
+  j["background_cameras"] = r.background_cameras;
+  if (r.background) {
+    const localize::BackgroundFusion& b = *r.background;
+    size_t instances = 0, accepted = 0;
+    for (const auto& c : b.cameras) instances += c.instances.size();
+    for (const auto& a : b.associations)
+      accepted += a.verdict == localize::AssociationVerdict::kAccepted;
+    nlohmann::json background = {{"capture_timestamp", b.capture_timestamp},
+                                  {"instances", instances},
+                                  {"accepted", accepted},
+                                  {"worker_ms", b.worker_ms},
+                                  {"worker_cpu_ms", b.worker_cpu_ms}};
+    if (b.measurement) background["measurement"] = poseJson(*b.measurement);
+    j["background"] = background;
+  }
   j["warnings"] = r.warnings;
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }

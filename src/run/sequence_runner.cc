@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <thread>
 #include <fstream>
 #include <opencv2/videoio.hpp>
 
@@ -55,7 +57,7 @@ std::vector<OdometrySample> odometryBetween(const std::vector<OdometrySample>& a
 }
 
 RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
-                       const RunOptions& options) {
+                       const RunOptions& options, ocr::TextSpotter* worker_spotter) {
   if (!options.oracle && !spotter)
     throw InputError("run: no text spotter given and --oracle not set");
   RunSummary summary;
@@ -71,12 +73,16 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
   checkFaultCameras(options.faults, sequence.rig());
   FaultInjector injector(options.faults, sequence.timestamps(), sequence.groundTruth(),
                          sequence.odometry());
+  localize::PipelineOptions pipeline_options = options.pipeline;
+  if (options.realtime) pipeline_options.realtime.wait_for_worker = false;
+  ocr::TextSpotter* const wrapped = injector.wrapSpotter(spotter);
   localize::Pipeline pipeline(sequence.rig(),
                               options.map_noise.position_sigma_m > 0.0
                                   ? map::perturbedMap(sequence.map(), options.map_noise)
                                   : sequence.map(),
-                              options.pipeline,
-                              injector.wrapSpotter(spotter));
+                              pipeline_options, wrapped,
+                              // A spoofing spotter is shared, so the worker is spoofed too.
+                              wrapped == spotter ? worker_spotter : nullptr);
   const auto& timestamps = sequence.timestamps();
   size_t count = timestamps.size();
   if (options.max_frames > 0) count = std::min(count, options.max_frames);
@@ -104,8 +110,19 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
   std::vector<double> latencies, errors, yaw_errors;
   std::vector<geometry::Pose2> estimated, truth_so_far;
   double previous_time = -std::numeric_limits<double>::infinity();
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  Clock::time_point previous_done = start;
   for (size_t i = 0; i < count; ++i) {
     const double t = timestamps[i];
+    const Clock::time_point release =
+        start + std::chrono::duration_cast<Clock::duration>(
+                    std::chrono::duration<double>(t - timestamps.front()));
+    if (options.realtime && i > 0 && previous_done > release) {
+      // The previous frame set was still running when this one came: dropped.
+      ++summary.frames_dropped;
+      continue;
+    }
     if (injector.skip(i)) {  // kidnapped: never seen, its odometry withheld
       previous_time = t;
       ++summary.frames_skipped_by_faults;
@@ -137,7 +154,11 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
       if (!c.image.empty() || c.instances) input.cameras.push_back(std::move(c));
     }
     injector.apply(i, input, load_warnings);
+    if (options.realtime) std::this_thread::sleep_until(release);
     localize::FrameResult result = pipeline.process(input);
+    previous_done = Clock::now();
+    const double age_ms =
+        std::chrono::duration<double, std::milli>(previous_done - release).count();
     result.warnings.insert(result.warnings.begin(), load_warnings.begin(), load_warnings.end());
     for (auto& note : injector.takeSpotterNotes()) result.warnings.push_back(std::move(note));
     frames_log << frameResultToJson(result) << '\n';
@@ -146,7 +167,12 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
     ++summary.status_counts[toString(result.status)];
     if (!result.warnings.empty()) ++summary.frames_with_warnings;
     latencies.push_back(result.timings.total_ms);
-    if (result.has_pose && !summary.first_fix_time) summary.first_fix_time = t;
+    if (result.has_pose && !summary.first_fix_time) {
+      summary.first_fix_time = t;
+      summary.first_pose_frame = i;
+      summary.first_pose_output_ms = (t - timestamps.front()) * 1000.0 + age_ms;
+    }
+    if (options.realtime && result.has_pose) summary.pose_age_ms.push_back(age_ms);
     if (summary.first_fix_time) {
       ++summary.frames_after_first_fix;
       if (result.has_pose) ++summary.poses_after_first_fix;
@@ -193,6 +219,10 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
   }
   summary.latency_median_ms = percentile(latencies, 0.5);
   summary.latency_p99_ms = percentile(latencies, 0.99);
+  summary.pose_age_median_ms = percentile(summary.pose_age_ms, 0.5);
+  summary.pose_age_p95_ms = percentile(summary.pose_age_ms, 0.95);
+  summary.pose_age_p99_ms = percentile(summary.pose_age_ms, 0.99);
+  summary.pose_age_max_ms = percentile(summary.pose_age_ms, 1.0);
   return summary;
 }
 

@@ -26,6 +26,12 @@ struct RunOptions {
   // Survey error (`parkloc run --map-noise`): the pipeline gets the sequence's map perturbed
   // (map/map_noise.h); the error is still measured against poses.tum. 0: the map as it is.
   map::MapNoise map_noise;
+  // Feed the frame sets at their recorded rate, as cameras would (`parkloc run --realtime`):
+  // frame set i is released at its capture time after the first one's and dropped when the
+  // previous one is still being processed then (its odometry goes to the next one); the
+  // search worker's texts are fused when ready (RealtimeOptions::wait_for_worker off).
+  // Reading the images from disk happens before the release, as a camera delivers them.
+  bool realtime = false;
 };
 
 struct RunSummary {
@@ -50,6 +56,19 @@ struct RunSummary {
   // Per frame set, the pipeline's total (image decoding excluded).
   double latency_median_ms = 0.0;
   double latency_p99_ms = 0.0;
+
+  // RunOptions::realtime: frame sets dropped, and each pose's age (the time process()
+  // returned it less the frame set's release time), milliseconds, in frame order.
+  size_t frames_dropped = 0;
+  std::vector<double> pose_age_ms;
+  double pose_age_median_ms = 0.0;
+  double pose_age_p95_ms = 0.0;
+  double pose_age_p99_ms = 0.0;
+  double pose_age_max_ms = 0.0;
+  // The first frame set with a pose (index in the drive), and (realtime) when that pose came
+  // out, milliseconds after the first frame set's release.
+  std::optional<size_t> first_pose_frame;
+  double first_pose_output_ms = 0.0;
 };
 
 // The ground-truth pose at time t, linearly interpolated; empty outside the trajectory.
@@ -61,7 +80,8 @@ std::vector<OdometrySample> odometryBetween(const std::vector<OdometrySample>& a
                                             double until);
 
 // Throws InputError (oracle without labels, spotter missing) and IoError (outputs).
+// `worker_spotter`: the search worker's own spotter (localize::Pipeline).
 RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
-                       const RunOptions& options);
+                       const RunOptions& options, ocr::TextSpotter* worker_spotter = nullptr);
 
 }  // namespace parkloc::run

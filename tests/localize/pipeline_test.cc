@@ -6,6 +6,8 @@
 #include <Eigen/Eigenvalues>
 #include <chrono>
 #include <functional>
+#include <future>
+#include <atomic>
 #include <map>
 #include <random>
 #include <set>
@@ -503,12 +505,7 @@ class SceneSpotter : public ocr::TextSpotter {
     std::this_thread::sleep_for(delay);
     const auto& camera = rig_.cameras[static_cast<size_t>(image.at<cv::Vec3b>(0, 0)[0])];
     auto all = testing::spotExactly(camera, map_, pose, {});
-    if (request.regions.empty()) return all;
-    std::vector<ocr::TextInstance> out;
-    for (const auto& t : all)
-      for (const auto& r : request.regions)
-        if (r.expected_texts.front() == t.text) out.push_back(t);
-    return out;
+    return testing::inRequestedRegions(all, request);
   }
   geometry::Pose2 pose;
   std::vector<ocr::SpotRequest> requests;
@@ -668,6 +665,125 @@ TEST_F(PipelineTest, CamerasCapturedOffTheFrameSetsTimeAreMovedToIt) {
   EXPECT_GT(not_told, 2.0 * told);
   EXPECT_EQ(Pipeline(rig, map).rig().cameras[1].vehicle_from_camera.matrix(),
             rig.cameras[1].vehicle_from_camera.matrix());
+}
+
+// A spotter that sees exactly what the synthetic drive shows, the frame set and the camera
+// told by the image (channel 0: the camera, channel 1: the frame set): it keeps no state, so
+// the critical path and the search worker may each have one. `gate`, when set, holds every
+// full-frame call until it is opened (or 20 s pass, which `timed_out` records).
+class DriveSpotter : public ocr::TextSpotter {
+ public:
+  DriveSpotter(const geometry::Rig& rig, const map::HdMap& map, const Drive& drive)
+      : rig_(rig), map_(map), drive_(drive) {}
+  std::string name() const override { return "drive"; }
+  std::vector<ocr::TextInstance> spot(const cv::Mat& image,
+                                      const ocr::SpotRequest& request) override {
+    if (request.regions.empty()) ++full_frames;
+    if (request.regions.empty() && gate) {
+      if (gate->wait_for(std::chrono::seconds(20)) != std::future_status::ready) timed_out = true;
+    }
+    const cv::Vec3b tag = image.at<cv::Vec3b>(0, 0);
+    const auto& camera = rig_.cameras[tag[0]];
+    auto all = testing::spotExactly(camera, map_, drive_.truth(tag[1] / kFrameRate), {});
+    return testing::inRequestedRegions(all, request);
+  }
+  std::optional<std::shared_future<void>> gate;
+  std::atomic<bool> timed_out{false};
+  std::atomic<int> full_frames{0};
+
+ private:
+  const geometry::Rig& rig_;
+  const map::HdMap& map_;
+  const Drive& drive_;
+};
+
+// Frame k of the drive as images that DriveSpotter reads.
+FrameInput driveImages(const geometry::Rig& rig, int k, const FrameInput& oracle) {
+  FrameInput in = oracle;
+  for (size_t c = 0; c < in.cameras.size(); ++c) {
+    in.cameras[c].instances.reset();
+    const auto& model = rig.cameras[c].model;
+    in.cameras[c].image = cv::Mat(model.height, model.width, CV_8UC3,
+                                  cv::Scalar(static_cast<double>(c), static_cast<double>(k), 0));
+  }
+  return in;
+}
+
+TEST_F(PipelineTest, ASlowSearchWorkerDelaysNoFrameSet) {
+  // The worker's spotter is stuck on its full frame until the test lets it go. Were process()
+  // to wait for it, the frame sets below would not come back before the gate's 20 s ran out.
+  Drive drive;
+  DriveSpotter critical(rig, map, drive), worker(rig, map, drive);
+  std::promise<void> open;
+  worker.gate = open.get_future().share();
+  PipelineOptions options;
+  options.initial_pose = drive.truth(0.0);
+  options.reading.full_frame_interval = 4;  // a sweep every frame set, one camera in turn
+  options.realtime.background_search = true;
+  options.realtime.wait_for_worker = false;
+  Pipeline pipeline(rig, map, options, &critical, &worker);
+  int handed_over = 0;
+  for (int k = 0; k < 12; ++k) {
+    const FrameResult r = pipeline.process(driveImages(rig, k, frame(drive, k)));
+    ASSERT_TRUE(r.has_pose) << k;
+    EXPECT_LT(positionError(r, drive.truth(k / kFrameRate)), 0.01) << k;
+    EXPECT_FALSE(r.background.has_value()) << k;  // the worker has not finished
+    handed_over += static_cast<int>(r.background_cameras.size());
+    for (const auto& c : r.cameras) EXPECT_FALSE(c.full_frame);
+  }
+  EXPECT_EQ(handed_over, 1);  // one job at a time: the sweeps due meanwhile were skipped
+  EXPECT_EQ(critical.full_frames, 0);
+  EXPECT_EQ(worker.full_frames, 1);  // the worker holds the first sweep
+  open.set_value();
+  // Let go, the worker's texts are fused in a frame set soon after.
+  std::optional<BackgroundFusion> fused;
+  for (int k = 12; k < 200 && !fused; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    const FrameResult r = pipeline.process(driveImages(rig, k, frame(drive, k)));
+    ASSERT_TRUE(r.has_pose);
+    EXPECT_LT(positionError(r, drive.truth(k / kFrameRate)), 0.01) << k;
+    fused = r.background;
+  }
+  ASSERT_TRUE(fused.has_value());
+  EXPECT_FALSE(worker.timed_out);
+  EXPECT_NEAR(fused->capture_timestamp, 0.0, 0.15);  // the first sweep's frame set
+  ASSERT_TRUE(fused->measurement.has_value());
+  // The fix is where the vehicle was when the images were taken, not where it is now.
+  EXPECT_LT((fused->measurement->translation() -
+             drive.truth(fused->capture_timestamp).translation()).norm(),
+            0.01);
+}
+
+TEST_F(PipelineTest, WaitingForTheSearchWorkerGivesTheSamePosesEveryRun) {
+  // Offline, the worker's texts are fused a fixed number of frame sets after their images:
+  // the first fix (from frame set 0's search) starts the track one frame set later than
+  // inside the frame set, and two runs give the same poses to the last bit.
+  Drive drive;
+  const auto run = [&](bool background) {
+    DriveSpotter critical(rig, map, drive), worker(rig, map, drive);
+    PipelineOptions options;
+    options.realtime.background_search = background;
+    Pipeline pipeline(rig, map, options, &critical, &worker);
+    std::vector<FrameResult> out;
+    for (int k = 0; k < 40; ++k) out.push_back(pipeline.process(driveImages(rig, k, frame(drive, k))));
+    return out;
+  };
+  const auto inside = run(false), first = run(true), second = run(true);
+  int first_inside = -1, first_background = -1;
+  for (int k = 0; k < 40; ++k) {
+    if (first_inside < 0 && inside[k].has_pose) first_inside = k;
+    if (first_background < 0 && first[k].has_pose) first_background = k;
+    ASSERT_EQ(first[k].has_pose, second[k].has_pose);
+    if (!first[k].has_pose) continue;
+    EXPECT_EQ(first[k].pose.x, second[k].pose.x);
+    EXPECT_EQ(first[k].pose.yaw, second[k].pose.yaw);
+    EXPECT_LT(positionError(first[k], drive.truth(k / kFrameRate)), 0.01) << k;
+  }
+  EXPECT_EQ(first_inside, 0);
+  EXPECT_EQ(first_background, 1);
+  ASSERT_TRUE(first[1].background.has_value());
+  EXPECT_EQ(first[1].background->capture_timestamp, 0.0);
+  EXPECT_EQ(first[1].status, TrackingStatus::kOk);
 }
 
 TEST(CaptureTime, TheVehicleMovesAlongAnArc) {

@@ -109,12 +109,7 @@ class CountingSpotter : public ocr::TextSpotter {
   std::vector<ocr::TextInstance> spot(const cv::Mat&, const ocr::SpotRequest& request) override {
     if (!only_camera.empty() && request.camera->name != only_camera) return {};
     auto all = testing::spotExactly(*request.camera, map_, pose, {});
-    if (request.regions.empty()) return all;
-    std::vector<ocr::TextInstance> out;
-    for (const auto& t : all)
-      for (const auto& r : request.regions)
-        if (r.expected_texts.front() == t.text) out.push_back(t);
-    return out;
+    return testing::inRequestedRegions(all, request);
   }
   geometry::Pose2 pose;
   std::string only_camera;  // non-empty: every other camera sees nothing

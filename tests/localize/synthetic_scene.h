@@ -110,6 +110,18 @@ inline std::vector<ocr::TextInstance> spotExactly(const geometry::RigCamera& cam
   return out;
 }
 
+// What a spotter asked for `request` reads of `all`: everything on a full frame, else the
+// texts of the requested regions.
+inline std::vector<ocr::TextInstance> inRequestedRegions(const std::vector<ocr::TextInstance>& all,
+                                                         const ocr::SpotRequest& request) {
+  if (request.regions.empty()) return all;
+  std::vector<ocr::TextInstance> out;
+  for (const auto& t : all)
+    for (const auto& r : request.regions)
+      if (r.expected_texts.front() == t.text) out.push_back(t);
+  return out;
+}
+
 // The same as solver observations (polygon corner i <-> landmark corner i).
 inline std::vector<LandmarkObservation> observeExactly(const geometry::Rig& rig,
                                                        const map::HdMap& map,

@@ -1,0 +1,99 @@
+#pragma once
+// Full-frame spotting off the frame set's critical path. Spotting a camera's full frame costs
+// 50-130 ms on two cores and all four 400-700 ms (the search before the first fix, the
+// tracking sweep, re-localisation after a lost track), while a frame set's tracked fits and
+// predicted reads cost a few milliseconds: run inside process(), the full frames set the
+// latency tail. The worker spots them on a thread of its own while process() returns each
+// frame set's pose from the cheap path; its texts are fused later, at the time their images
+// were captured (late_fusion.h).
+//
+// The worker runs at a lower priority (a nice value, Linux schedules threads one by one) so
+// that on two cores the critical path's spotting takes the cores when it needs them and the
+// worker gets the rest. Its spotter must be one the critical path does not call at the same
+// time (ocr::TextSpotter keeps per-call state): its own instance, or one shared behind a
+// mutex (serialized_spotter.h).
+#include <condition_variable>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "ocr/text_spotter.h"
+
+namespace parkloc::localize {
+
+struct RealtimeOptions {
+  // Full-frame spotting runs on a worker thread and its texts are fused when ready, at the
+  // time their images were captured; false: inside process(), and the frame set that carries
+  // it waits for it (the latency tail: 100-700 ms on two cores).
+  bool background_search = false;
+  // true: the worker's texts are fused exactly fuse_after_frames frame sets after the frame
+  // set whose images they come from, waiting for the worker if it is not done, so that an
+  // offline run gives the same poses whatever the machine's load; false: at the first frame
+  // set after the worker finished (a live drive: no frame set waits).
+  bool wait_for_worker = true;
+  int fuse_after_frames = 1;
+  // The worker thread's nice value: on two cores the critical path must win the cores.
+  int worker_nice = 10;
+  // Inference threads of the worker's own spotter (the apps build it): with one, all of its
+  // work runs on the worker thread at the worker's priority.
+  int worker_inference_threads = 1;
+};
+
+// The full frames of one frame set to spot.
+struct SearchJob {
+  long frame = -1;  // the frame set's index in the drive
+  double timestamp = 0.0;
+  std::vector<size_t> cameras;  // rig indices
+  std::vector<cv::Mat> images;  // owned copies
+  std::vector<ocr::SpotRequest> requests;
+};
+
+// What the worker read on them.
+struct SearchResult {
+  long frame = -1;
+  double timestamp = 0.0;
+  std::vector<size_t> cameras;
+  std::vector<std::vector<ocr::TextInstance>> instances;  // per job camera
+  std::vector<std::string> errors;                        // per job camera; "": spotted
+  double wall_ms = 0.0;  // the worker's time on the job
+  double cpu_ms = 0.0;   // the worker thread's CPU time on it
+};
+
+// One worker thread that spots one job at a time.
+class SearchWorker {
+ public:
+  // `spotter` must outlive the worker.
+  SearchWorker(ocr::TextSpotter* spotter, int nice);
+  // Waits for the job in hand, if any, then ends the thread.
+  ~SearchWorker();
+  SearchWorker(const SearchWorker&) = delete;
+  SearchWorker& operator=(const SearchWorker&) = delete;
+
+  // A job was submitted and its result not yet taken.
+  bool busy() const;
+  // Hands the worker a job; only when not busy.
+  void submit(SearchJob job);
+  // The result, when the worker has finished it (never blocks).
+  std::optional<SearchResult> poll();
+  // The result, waiting for the worker to finish it; nullopt when not busy.
+  std::optional<SearchResult> wait();
+
+ private:
+  void run(int nice);
+  SearchResult spot(const SearchJob& job) const;
+
+  ocr::TextSpotter* spotter_;
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  std::optional<SearchJob> job_;
+  std::optional<SearchResult> result_;
+  bool busy_ = false;
+  bool stop_ = false;
+  std::thread thread_;
+};
+
+}  // namespace parkloc::localize

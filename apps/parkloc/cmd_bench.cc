@@ -1,7 +1,7 @@
 // parkloc bench SEQUENCE_DIR: latency per four-camera frame set of the full pipeline and, in
 // the same run, of the paper's pipeline (full-frame OCR on all four cameras every frame); then
-// the drive replayed at its recorded rate (`parkloc run --realtime`), full-frame spotting
-// inside the frame set and on the search worker: dropped frame sets and pose ages, also as
+// the drive replayed at its recorded rate (`parkloc run --realtime`), the heavy work inside
+// the frame set and on the workers: dropped frame sets and pose ages, also as
 // ratios to the paper pipeline's median latency (the machine's speed cancels out).
 #include <fmt/format.h>
 
@@ -31,7 +31,7 @@ struct BenchArgs {
   app::ConfigArgs config;
 };
 
-// The drive at its recorded rate, synchronous and with the search worker.
+// The drive at its recorded rate, with the heavy work inside the frame set and on workers.
 void replay(const BenchArgs& a, const config::Config& config, ocr::TextSpotter& spotter,
             const eval::EvaluationReport& report) {
   double paper_median = 0.0;
@@ -43,31 +43,37 @@ void replay(const BenchArgs& a, const config::Config& config, ocr::TextSpotter& 
                     : std::filesystem::path(a.out);
   std::cout << "\nreal-time replay at the recorded rate (pose age: output time less capture "
                "time; ratios to the paper pipeline's median)\n\n"
-               "| full frames | dropped | age median | p95 | p99 | max | median / paper | "
+               "| heavy work | dropped | age median | p95 | p99 | max | median / paper | "
                "p99 / paper | first pose | error mean | error p95 |\n"
                "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  std::unique_ptr<ocr::TextSpotter> worker_spotter;
-  for (const bool background : {false, true}) {
+  // Where the heavy work runs: inside the frame set; full frames on the search worker; full
+  // frames and the reads at predicted places on workers (localize/search_worker.h).
+  struct Mode {
+    const char* name;
+    const char* folder;
+    bool search, reads;
+  };
+  for (const Mode& mode : {Mode{"in the frame set", "replay_synchronous", false, false},
+                           Mode{"search worker", "replay_worker", true, false},
+                           Mode{"search and read workers", "replay_workers", true, true}}) {
     run::RunOptions options;
     options.pipeline = config.pipeline;
-    options.pipeline.realtime.background_search = background;
+    options.pipeline.realtime.background_search = mode.search;
+    options.pipeline.realtime.background_reads = mode.reads;
     options.realtime = true;
     options.max_frames = static_cast<size_t>(a.max_frames);
-    options.out_dir = (out / (background ? "replay_worker" : "replay_synchronous")).string();
-    if (background && !worker_spotter) {
-      config::Config worker_config = config;
-      worker_config.pipeline.realtime.background_search = true;
-      worker_spotter = app::makeWorkerSpotter(worker_config);
-    }
-    const run::RunSummary s =
-        run::runSequence(sequence, &spotter, options, background ? worker_spotter.get() : nullptr);
+    options.out_dir = (out / mode.folder).string();
+    config::Config worker_config = config;
+    worker_config.pipeline = options.pipeline;
+    const app::WorkerSpotterSet workers = app::makeWorkerSpotters(worker_config);
+    const run::RunSummary s = run::runSequence(sequence, &spotter, options, workers.pointers());
     const auto ratio = [&](double ms) {
       return paper_median > 0.0 ? fmt::format("{:.3f}", ms / paper_median) : std::string("-");
     };
     std::cout << fmt::format(
         "| {} | {} of {} | {:.1f} ms | {:.1f} ms | {:.1f} ms | {:.1f} ms | {} | {} | {} | "
         "{:.2f} cm | {:.2f} cm |\n",
-        background ? "search worker" : "in the frame set", s.frames_dropped,
+        mode.name, s.frames_dropped,
         s.frames + s.frames_dropped, s.pose_age_median_ms, s.pose_age_p95_ms, s.pose_age_p99_ms,
         s.pose_age_max_ms, ratio(s.pose_age_median_ms), ratio(s.pose_age_p99_ms),
         s.first_pose_frame ? fmt::format("frame set {}, out at {:.0f} ms", *s.first_pose_frame,
@@ -94,9 +100,9 @@ void runBench(const BenchArgs& a) {
   options.title = "parkloc bench";
   options.dataset = a.sequence;
   options.command = "parkloc bench " + a.sequence;
-  auto worker_spotter = app::makeWorkerSpotter(config);
+  const auto workers = app::makeWorkerSpotters(config);
   const eval::EvaluationReport report =
-      eval::evaluateSequences({a.sequence}, spotter.get(), options, worker_spotter.get());
+      eval::evaluateSequences({a.sequence}, spotter.get(), options, workers.pointers());
   progress.finish();
   std::cout << fmt::format("{} frame sets of {}, {} cameras each, engine {}\n", report.main.frames,
                            a.sequence, 4, spotter->name());
@@ -126,7 +132,7 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--out", args->out, "Also write a report folder");
   cmd->add_flag("--no-paper", args->no_paper, "Only the full pipeline");
   cmd->add_flag("--no-replay", args->no_replay,
-                "Skip the real-time replays (the drive at its recorded rate, twice)");
+                "Skip the real-time replays (the drive at its recorded rate, three times)");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   args->config.addTo(cmd);
   cmd->callback([args] { runBench(*args); });

@@ -55,9 +55,9 @@ void runDemo(const DemoArgs& a) {
   options.title = "parkloc demo";
   options.dataset = data_dir + " (built-in demo garage)";
   options.command = "parkloc demo --out " + a.out + (a.paper ? " --paper" : "");
-  auto worker_spotter = app::makeWorkerSpotter(config);
+  const auto workers = app::makeWorkerSpotters(config);
   const eval::EvaluationReport report = eval::evaluateSequences(
-      eval::splitSequences(data_dir, "test"), spotter.get(), options, worker_spotter.get());
+      eval::splitSequences(data_dir, "test"), spotter.get(), options, workers.pointers());
   progress.finish();
   eval::writeReport(report, a.out);
 

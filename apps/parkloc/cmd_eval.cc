@@ -174,9 +174,9 @@ void runEval(const EvalArgs& a) {
   options.dataset =
       a.dataset + " (" + a.split + ", " + std::to_string(sequences.size()) + " sequences)";
   options.command = a.command_line;
-  auto worker_spotter = app::makeWorkerSpotter(config);
+  const auto workers = app::makeWorkerSpotters(config);
   const eval::EvaluationReport report =
-      eval::evaluateSequences(sequences, spotter.get(), options, worker_spotter.get());
+      eval::evaluateSequences(sequences, spotter.get(), options, workers.pointers());
   progress.finish();
   eval::writeReport(report, a.out);
   for (const eval::Table& t : report.tables) std::cout << eval::tableMarkdown(t);

@@ -25,7 +25,7 @@ struct RunArgs {
   double map_noise = 0.0;
   uint64_t map_noise_seed = 0;
   bool quiet = false;
-  bool realtime = false, background_search = false;
+  bool realtime = false, background_search = false, background_reads = false;
   std::vector<std::string> inject;
   parkloc::app::ConfigArgs config;
 };
@@ -52,6 +52,7 @@ void run(const RunArgs& a) {
   options.video_path = a.video;
   options.realtime = a.realtime;
   if (a.background_search) options.pipeline.realtime.background_search = true;
+  if (a.background_reads) options.pipeline.realtime.background_reads = true;
   if (!a.inject.empty()) {
     options.faults = run::parseFaults(a.inject);
     std::cerr << "parkloc: injecting faults:\n" << run::describeFaults(options.faults) << "\n";
@@ -59,18 +60,19 @@ void run(const RunArgs& a) {
   if (!a.paper && !a.no_odometry && sequence.odometry().empty())
     std::cerr << "parkloc: warning: no odometry: the filter predicts a random walk\n";
 
-  std::unique_ptr<ocr::TextSpotter> spotter, worker_spotter;
+  std::unique_ptr<ocr::TextSpotter> spotter;
+  app::WorkerSpotterSet workers;
   if (!a.oracle) spotter = app::makeSpotter(config);
   if (!a.oracle) {
     config::Config worker_config = config;
     worker_config.pipeline = options.pipeline;
-    worker_spotter = app::makeWorkerSpotter(worker_config);
+    workers = app::makeWorkerSpotters(worker_config);
   }
   app::ProgressLine progress(a.quiet);
   options.progress = [&](size_t done, size_t total) {
     progress({"run " + sequence.dir(), done, total});
   };
-  const auto s = run::runSequence(sequence, spotter.get(), options, worker_spotter.get());
+  const auto s = run::runSequence(sequence, spotter.get(), options, workers.pointers());
   progress.finish();
 
   std::cout << fmt::format("frames {}  with pose {}  first fix {}\n", s.frames, s.frames_with_pose,
@@ -139,6 +141,8 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
                 "previous one runs is dropped; report dropped frame sets and pose ages");
   cmd->add_flag("--background-search", args->background_search,
                 "Full-frame spotting on a worker thread (pipeline.realtime.background_search)");
+  cmd->add_flag("--background-reads", args->background_reads,
+                "Reads at predicted places on a worker thread (pipeline.realtime.background_reads)");
   cmd->add_option("--inject", args->inject,
                   "Inject faults, e.g. dark:front:3-8,drop:0.1 (see run/fault_injection.h)")
       ->allow_extra_args(false);

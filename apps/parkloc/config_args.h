@@ -36,14 +36,22 @@ inline std::unique_ptr<ocr::TextSpotter> makeSpotter(const config::Config& confi
   return std::make_unique<ocr::PpOcrSpotter>(config::spotterOptions(config));
 }
 
-// The search worker's own spotter (localize/search_worker.h), with the worker's inference
+// The workers' own spotters (localize/search_worker.h), each with the workers' inference
 // threads; made after makeSpotter's, whose thread counts size ONNX Runtime's shared pool.
-// Null when the configuration runs no search worker.
-inline std::unique_ptr<ocr::TextSpotter> makeWorkerSpotter(const config::Config& config) {
-  if (!config.pipeline.realtime.background_search || config.pipeline.paper_mode) return nullptr;
+// A spotter is made only for a worker the configuration runs.
+struct WorkerSpotterSet {
+  std::unique_ptr<ocr::TextSpotter> search, reads;
+  localize::WorkerSpotters pointers() const { return {search.get(), reads.get()}; }
+};
+inline WorkerSpotterSet makeWorkerSpotters(const config::Config& config) {
+  const localize::RealtimeOptions& realtime = config.pipeline.realtime;
+  WorkerSpotterSet out;
+  if (config.pipeline.paper_mode) return out;
   ocr::PpOcrOptions options = config::spotterOptions(config);
-  options.onnx.intra_op_threads = std::max(1, config.pipeline.realtime.worker_inference_threads);
-  return std::make_unique<ocr::PpOcrSpotter>(options);
+  options.onnx.intra_op_threads = std::max(1, realtime.worker_inference_threads);
+  if (realtime.background_search) out.search = std::make_unique<ocr::PpOcrSpotter>(options);
+  if (realtime.background_reads) out.reads = std::make_unique<ocr::PpOcrSpotter>(options);
+  return out;
 }
 
 }  // namespace parkloc::app

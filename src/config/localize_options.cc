@@ -195,6 +195,9 @@ void describe(OptionVisitor& v, localize::RealtimeOptions& o) {
           "the worker thread's nice value: the critical path wins the cores");
   v.value("worker_inference_threads", o.worker_inference_threads,
           "inference threads of the worker's own spotter (1: all on the worker thread)");
+  v.value("background_reads", o.background_reads,
+          "the reads at predicted places on a worker of their own, fused at their capture "
+          "time; the frame set keeps the ink fits of texts read lately");
 }
 
 }  // namespace

@@ -115,7 +115,7 @@ std::optional<geometry::Pose2> truthAt(const std::vector<io::StampedPose>& truth
 
 EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
                                    ocr::TextSpotter* spotter, const EvaluationOptions& options,
-                                   ocr::TextSpotter* worker_spotter) {
+                                   localize::WorkerSpotters workers) {
   std::vector<VariantTally> tallies;
   for (const VariantSpec& spec : variantSpecs(options, spotter != nullptr)) {
     VariantTally tally;
@@ -174,7 +174,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
                 ? map::perturbedMap(seq.map(), {tally.spec.map_noise_m, options.map_noise_seed})
                 : seq.map(),
             pipeline_options, tally.spec.source == Source::kSpotter ? spotter : nullptr,
-            tally.spec.source == Source::kSpotter ? worker_spotter : nullptr);
+            tally.spec.source == Source::kSpotter ? workers : localize::WorkerSpotters{});
       }
       runs.push_back(std::move(run));
     }
@@ -280,8 +280,9 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
           total_ms += shared_ocr_ms;
         }
         if (tally.spec.source == Source::kOracle) timing.stage_ms.erase("spotting");
-        // Off the critical path: the search worker's time on the texts fused here.
-        if (result.background) timing.worker_ms = result.background->worker_ms;
+        // Off the critical path: the workers' time on the texts fused here.
+        if (result.background) timing.worker_ms += result.background->worker_ms;
+        if (result.deferred_reads) timing.worker_ms += result.deferred_reads->worker_ms;
         timing.total_ms = total_ms;
         tally.timings.push_back(timing);
 

@@ -49,10 +49,9 @@ struct EvaluationOptions {
 
 // Without a spotter only the oracle and odometry-only variants run. The report's main
 // variant is parkloc when it ran, else the oracle. Throws InputError for a bad sequence.
-// `worker_spotter`: the search worker's own spotter for parkloc's pipeline
-// (localize::RealtimeOptions::background_search; null: the pipeline shares `spotter`).
+// `workers`: the workers' own spotters for parkloc's pipeline (localize::Pipeline).
 EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
                                    ocr::TextSpotter* spotter, const EvaluationOptions& options,
-                                   ocr::TextSpotter* worker_spotter = nullptr);
+                                   localize::WorkerSpotters workers = {});
 
 }  // namespace parkloc::eval

@@ -107,8 +107,8 @@ struct StageTimings {
   double cpu_ms = 0.0;
 };
 
-// Full-frame texts spotted on the search worker (search_worker.h) and fused in this frame
-// set, at the time their images were captured (late_fusion.h).
+// Texts spotted on a worker (search_worker.h: full frames, or the reads at predicted places)
+// and fused in this frame set, at the time their images were captured (late_fusion.h).
 struct BackgroundFusion {
   double capture_timestamp = 0.0;  // the frame set whose images they come from
   std::vector<CameraResult> cameras;  // rig order; the worker's cameras hold its texts
@@ -144,6 +144,10 @@ struct FrameResult {
   // holds only what the critical path spotted), and what the worker gave back and was fused.
   std::vector<std::string> background_cameras;
   std::optional<BackgroundFusion> background;
+  // Cameras whose reads at predicted places went to the read worker this frame set
+  // (RealtimeOptions::background_reads), and the reads of an earlier frame set fused here.
+  std::vector<std::string> deferred_read_cameras;
+  std::optional<BackgroundFusion> deferred_reads;
   StageTimings timings;
   std::vector<std::string> warnings;
 };

@@ -1,6 +1,9 @@
 #include "localize/pipeline.h"
 
 #include <algorithm>
+#include <iterator>
+
+#include <fmt/format.h>
 
 #include "localize/capture_time.h"
 #include "localize/floor_heights.h"
@@ -30,17 +33,24 @@ struct Pipeline::Impl {
   ocr::TextSpotter* spotter = nullptr;
   FloorHeights floors;
 
-  // The search worker (options.realtime.background_search) and what the pipeline knows of
-  // the job in its hand: the frame set's filter, rig and travel when its images were taken.
-  std::unique_ptr<SerializedSpotter> shared_spotter;  // without a worker spotter of its own
-  std::unique_ptr<SearchWorker> worker;
-  struct PendingSearch {
+  // Work off the critical path (search_worker.h): the full frames on the search worker
+  // (options.realtime.background_search), the reads at predicted places on the read worker
+  // (background_reads); each lane remembers its job's frame set as it was when its images
+  // were taken: the filter's prediction, the rig and the travel, for the late fusion.
+  struct PendingJob {
     long frame = -1;
     PoseEkf ekf;  // predicted to the frame set, before its measurement
     geometry::Rig rig;
     geometry::Pose2 travelled;
   };
-  std::optional<PendingSearch> pending;
+  struct Lane {
+    std::unique_ptr<SearchWorker> worker;
+    std::optional<PendingJob> pending;
+    bool full_frames = false;  // its texts come from full frames (CameraResult::full_frame)
+  };
+  std::unique_ptr<SerializedSpotter> shared_spotter;  // without a search spotter of its own
+  Lane search_lane{nullptr, std::nullopt, true};
+  Lane read_lane{nullptr, std::nullopt, false};
   long frame_index = -1;
   // The vehicle's path so far in the frame of the first frame set (odometry, through the
   // filter's prediction when it runs): the motion between two frame sets' poses on it.
@@ -57,7 +67,7 @@ struct Pipeline::Impl {
   PaperPipeline paper;
 
   Impl(geometry::Rig r, map::HdMap m, const PipelineOptions& o, ocr::TextSpotter* s,
-       ocr::TextSpotter* worker_spotter)
+       WorkerSpotters workers)
       : nominal_rig(r),
         rig(std::move(r)),
         map(std::move(m)),
@@ -74,19 +84,25 @@ struct Pipeline::Impl {
         lifecycle(o.tracking,
                   searchWindowFrames(o.reading.search_cameras_per_frame, rig.cameras.size())),
         paper(rig, map, o.paper_pipeline, o.paper_modules) {
-    if (o.realtime.background_search && !o.paper_mode && (s || worker_spotter)) {
-      if (!worker_spotter) {
+    if (o.realtime.background_search && !o.paper_mode && (s || workers.search)) {
+      if (!workers.search) {
         shared_spotter = std::make_unique<SerializedSpotter>(s);
-        spotter = worker_spotter = shared_spotter.get();
+        spotter = workers.search = shared_spotter.get();
       }
-      worker = std::make_unique<SearchWorker>(worker_spotter, o.realtime.worker_nice);
+      search_lane.worker = std::make_unique<SearchWorker>(workers.search, o.realtime.worker_nice);
     }
+    // The reads need a spotter of their own: sharing the critical path's would make the
+    // frame set wait for a read in progress.
+    if (o.realtime.background_reads && !o.paper_mode && workers.reads)
+      read_lane.worker = std::make_unique<SearchWorker>(workers.reads, o.realtime.worker_nice);
     reset();
   }
 
   void reset() {
-    if (worker) worker->wait();
-    pending.reset();
+    for (Lane* lane : {&search_lane, &read_lane}) {
+      if (lane->worker) lane->worker->wait();
+      lane->pending.reset();
+    }
     frame_index = -1;
     travelled = geometry::Pose2();
     ekf.reset();
@@ -126,14 +142,16 @@ struct Pipeline::Impl {
       lifecycle.searchWindow().advance(moved.sincePreviousFrame());
     result.timings.filter_ms += motion_time.elapsedMs();
 
-    // The search worker's texts, when their turn has come (late_fusion.h).
-    if (worker) collectSearch(result);
+    // The workers' texts, when their turn has come (late_fusion.h).
+    collectLate(search_lane, result, result.background);
+    collectLate(read_lane, result, result.deferred_reads);
     const bool tracking = !options.paper_mode && isTracking(ekf, options.tracking);
 
     // 2. Read planning: map-guided regions while tracking, the full frame now and then.
     const Stopwatch planning_time;
-    ReadPlan plan = reading.plan(tracking, ekf, level, worker != nullptr);
-    if (worker) handOverFullFrames(frame, plan, result);
+    ReadPlan plan = reading.plan(tracking, ekf, level, search_lane.worker != nullptr);
+    if (search_lane.worker) handOverFullFrames(frame, plan, result);
+    if (read_lane.worker && tracking) handOverReads(frame, plan, result);
     result.timings.roi_ms += planning_time.elapsedMs();
 
     // 3. Spotting, camera by camera in rig order.
@@ -167,55 +185,91 @@ struct Pipeline::Impl {
     return result;
   }
 
+  // Camera c's image of the frame set, when it can be spotted (present, decoded, of its
+  // calibrated size, not instances handed in); null otherwise.
+  const cv::Mat* spottableImage(const FrameInput& frame, size_t c) const {
+    const geometry::RigCamera& camera = nominal_rig.cameras[c];
+    for (const CameraInput& input : frame.cameras)
+      if (input.camera == camera.name && !input.instances && !input.image.empty() &&
+          input.image.cols == camera.model.width && input.image.rows == camera.model.height)
+        return &input.image;
+    return nullptr;
+  }
+
   // The full frames of the plan go to the search worker, when it is free; either way the
   // critical path spots none of them.
   void handOverFullFrames(const FrameInput& frame, ReadPlan& plan, FrameResult& result) {
     // A full frame due while the worker is still busy is skipped: the schedule comes back to
     // the camera a few frame sets later.
-    const bool free = !worker->busy();
+    const bool free = !search_lane.worker->busy();
     SearchJob job;
-    job.frame = frame_index;
-    job.timestamp = frame.timestamp;
     for (size_t c = 0; c < nominal_rig.cameras.size(); ++c) {
       if (!free || !plan.choice.full_frame[c]) continue;
-      const auto& name = nominal_rig.cameras[c].name;
-      for (const CameraInput& input : frame.cameras)
-        if (input.camera == name && !input.instances && !input.image.empty() &&
-            input.image.cols == nominal_rig.cameras[c].model.width &&
-            input.image.rows == nominal_rig.cameras[c].model.height) {
-          job.cameras.push_back(c);
-          job.images.push_back(input.image.clone());  // the caller may reuse its buffers
-          job.requests.push_back(reading.request(c, plan, ekf.pose()));
-        }
+      if (const cv::Mat* image = spottableImage(frame, c)) {
+        job.cameras.push_back(c);
+        job.images.push_back(image->clone());  // the caller may reuse its buffers
+        job.requests.push_back(reading.request(c, plan, ekf.pose()));
+      }
     }
     std::fill(plan.choice.full_frame.begin(), plan.choice.full_frame.end(), false);
-    if (job.cameras.empty()) return;
     for (size_t c : job.cameras) result.background_cameras.push_back(nominal_rig.cameras[c].name);
-    pending = PendingSearch{frame_index, ekf, rig, travelled};
-    worker->submit(std::move(job));
+    submit(search_lane, frame, std::move(job));
   }
 
-  // The worker's result: waited for at its fixed turn (wait_for_worker), else taken when done.
-  void collectSearch(FrameResult& result) {
-    if (!pending) return;
+  // The plan's reads go to the read worker, when it is free (else they stay in the frame
+  // set); the critical path keeps the fits.
+  void handOverReads(const FrameInput& frame, ReadPlan& plan, FrameResult& result) {
+    if (read_lane.worker->busy()) return;
+    ReadPlan reads = plan;
+    SearchJob job;
+    for (size_t c = 0; c < nominal_rig.cameras.size(); ++c) {
+      reads.regions[c].clear();
+      if (plan.choice.full_frame[c]) continue;
+      auto& regions = plan.regions[c];
+      const auto fits = std::stable_partition(
+          regions.begin(), regions.end(), [](const RegionCandidate& r) { return !r.roi.read; });
+      if (fits == regions.end()) continue;
+      const cv::Mat* image = spottableImage(frame, c);
+      if (!image) continue;
+      std::move(fits, regions.end(), std::back_inserter(reads.regions[c]));
+      regions.erase(fits, regions.end());
+      job.cameras.push_back(c);
+      job.images.push_back(image->clone());
+      job.requests.push_back(reading.request(c, reads, ekf.pose()));
+      result.deferred_read_cameras.push_back(nominal_rig.cameras[c].name);
+    }
+    submit(read_lane, frame, std::move(job));
+  }
+
+  void submit(Lane& lane, const FrameInput& frame, SearchJob job) {
+    if (job.cameras.empty()) return;
+    job.frame = frame_index;
+    job.timestamp = frame.timestamp;
+    lane.pending = PendingJob{frame_index, ekf, rig, travelled};
+    lane.worker->submit(std::move(job));
+  }
+
+  // A worker's result: waited for at its fixed turn (wait_for_worker), else taken when done.
+  void collectLate(Lane& lane, FrameResult& result, std::optional<BackgroundFusion>& fused) {
+    if (!lane.worker || !lane.pending) return;
     std::optional<SearchResult> done;
     const RealtimeOptions& o = options.realtime;
     if (o.wait_for_worker) {
-      if (frame_index - pending->frame < std::max(1, o.fuse_after_frames)) return;
-      done = worker->wait();
+      if (frame_index - lane.pending->frame < std::max(1, o.fuse_after_frames)) return;
+      done = lane.worker->wait();
     } else {
-      done = worker->poll();
+      done = lane.worker->poll();
     }
     if (!done) return;
-    fuseSearch(*done, result);
-    pending.reset();
+    fuseLate(*lane.pending, lane.full_frames, *done, result, fused);
+    lane.pending.reset();
   }
 
   // The worker's texts as they would have been fused at their capture time: associated
   // against the filter's prediction then, each camera where it stood then, and the fix
   // carried to the present by the motion since (late_fusion.h).
-  void fuseSearch(const SearchResult& done, FrameResult& result) {
-    const PendingSearch& then = *pending;
+  void fuseLate(const PendingJob& then, bool full_frames, const SearchResult& done,
+                FrameResult& result, std::optional<BackgroundFusion>& fused_out) {
     const geometry::Pose2 motion_since = then.travelled.inverse() * travelled;
     FrameResult late;
     late.timestamp = result.timestamp;
@@ -227,7 +281,7 @@ struct Pipeline::Impl {
     }
     for (size_t k = 0; k < done.cameras.size(); ++k) {
       CameraResult& c = late.cameras[done.cameras[k]];
-      c.full_frame = true;
+      c.full_frame = full_frames;
       if (!done.errors[k].empty()) {
         c.image_ok = false;
         result.warnings.push_back("camera '" + c.camera + "': " + done.errors[k]);
@@ -238,8 +292,9 @@ struct Pipeline::Impl {
     if (tracking_then != isTracking(ekf, options.tracking)) {
       // The track started or was lost meanwhile: the prediction the texts would have been
       // gated against is not the filter's any more.
-      result.warnings.push_back("full-frame texts of an earlier frame set dropped: the track "
-                                "changed state while they were spotted");
+      result.warnings.push_back(fmt::format(
+          "{} of an earlier frame set dropped: the track changed state while they were spotted",
+          full_frames ? "full-frame texts" : "reads"));
       return;
     }
     const geometry::Rig current_rig = rig;
@@ -282,7 +337,7 @@ struct Pipeline::Impl {
     fused.measurement = late.measurement;
     fused.worker_ms = done.wall_ms;
     fused.worker_cpu_ms = done.cpu_ms;
-    result.background = std::move(fused);
+    fused_out = std::move(fused);
   }
 
   // The SE(2) solve, then the track's lifecycle.
@@ -303,9 +358,8 @@ struct Pipeline::Impl {
 };
 
 Pipeline::Pipeline(geometry::Rig rig, map::HdMap map, PipelineOptions options,
-                   ocr::TextSpotter* spotter, ocr::TextSpotter* worker_spotter)
-    : impl_(std::make_unique<Impl>(std::move(rig), std::move(map), options, spotter,
-                                   worker_spotter)) {}
+                   ocr::TextSpotter* spotter, WorkerSpotters workers)
+    : impl_(std::make_unique<Impl>(std::move(rig), std::move(map), options, spotter, workers)) {}
 Pipeline::~Pipeline() = default;
 Pipeline::Pipeline(Pipeline&&) noexcept = default;
 Pipeline& Pipeline::operator=(Pipeline&&) noexcept = default;

@@ -75,11 +75,12 @@ class Pipeline {
  public:
   // `spotter` may be null when every frame brings its instances (oracle); a frame that
   // needs spotting without a spotter gets a warning and no instances. The rig and map
-  // are copied; the spotters must outlive the pipeline. `worker_spotter` spots the full
-  // frames on the search worker (options.realtime.background_search); null: `spotter`,
-  // shared behind a mutex (serialized_spotter.h).
+  // are copied; the spotters must outlive the pipeline. `workers.search` spots the full
+  // frames on the search worker (options.realtime.background_search; null: `spotter`, shared
+  // behind a mutex, serialized_spotter.h); `workers.reads` the reads at predicted places
+  // (options.realtime.background_reads; null: they stay in the frame set).
   Pipeline(geometry::Rig rig, map::HdMap map, PipelineOptions options = {},
-           ocr::TextSpotter* spotter = nullptr, ocr::TextSpotter* worker_spotter = nullptr);
+           ocr::TextSpotter* spotter = nullptr, WorkerSpotters workers = {});
   ~Pipeline();
   Pipeline(Pipeline&&) noexcept;
   Pipeline& operator=(Pipeline&&) noexcept;

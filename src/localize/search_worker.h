@@ -41,9 +41,22 @@ struct RealtimeOptions {
   // Inference threads of the worker's own spotter (the apps build it): with one, all of its
   // work runs on the worker thread at the worker's priority.
   int worker_inference_threads = 1;
+  // The reads at predicted places (a region of a text not read lately: detection in a small
+  // patch and the recognizer, 10-20 ms a read on two cores, the bulk of a tracked frame set's
+  // time) run on a worker of their own with its own spotter, and their texts are fused like
+  // the full frames', at their capture time; the critical path keeps the ink fits of the
+  // texts read lately. false, or without that spotter: the reads stay inside the frame set.
+  bool background_reads = false;
 };
 
-// The full frames of one frame set to spot.
+// The spotters of the workers, each owned by the caller and called by its worker alone
+// (null: no spotter of its own; see Pipeline).
+struct WorkerSpotters {
+  ocr::TextSpotter* search = nullptr;  // full frames (background_search)
+  ocr::TextSpotter* reads = nullptr;   // reads at predicted places (background_reads)
+};
+
+// The images of one frame set to spot off the critical path: full frames, or a few regions.
 struct SearchJob {
   long frame = -1;  // the frame set's index in the drive
   double timestamp = 0.0;

@@ -75,23 +75,25 @@ std::string frameResultToJson(const localize::FrameResult& r) {
                      {"filter", r.timings.filter_ms},
                      {"total", r.timings.total_ms},
                      {"cpu", r.timings.cpu_ms}};
-  // The search worker (localize/search_worker.h): the full frames handed to it, and what it
-  // gave back and was fused in this frame set, with its own time (off the critical path).
-  j["background_cameras"] = r.background_cameras;
-  if (r.background) {
-    const localize::BackgroundFusion& b = *r.background;
+  // The workers (localize/search_worker.h): the cameras handed to them, and what they gave
+  // back and was fused in this frame set, with their own time (off the critical path).
+  const auto fusion = [](const localize::BackgroundFusion& b) {
     size_t instances = 0, accepted = 0;
     for (const auto& c : b.cameras) instances += c.instances.size();
     for (const auto& a : b.associations)
       accepted += a.verdict == localize::AssociationVerdict::kAccepted;
-    nlohmann::json background = {{"capture_timestamp", b.capture_timestamp},
-                                  {"instances", instances},
-                                  {"accepted", accepted},
-                                  {"worker_ms", b.worker_ms},
-                                  {"worker_cpu_ms", b.worker_cpu_ms}};
-    if (b.measurement) background["measurement"] = poseJson(*b.measurement);
-    j["background"] = background;
-  }
+    nlohmann::json out = {{"capture_timestamp", b.capture_timestamp},
+                          {"instances", instances},
+                          {"accepted", accepted},
+                          {"worker_ms", b.worker_ms},
+                          {"worker_cpu_ms", b.worker_cpu_ms}};
+    if (b.measurement) out["measurement"] = poseJson(*b.measurement);
+    return out;
+  };
+  j["background_cameras"] = r.background_cameras;
+  if (r.background) j["background"] = fusion(*r.background);
+  j["deferred_read_cameras"] = r.deferred_read_cameras;
+  if (r.deferred_reads) j["deferred_reads"] = fusion(*r.deferred_reads);
   j["warnings"] = r.warnings;
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }

@@ -57,7 +57,7 @@ std::vector<OdometrySample> odometryBetween(const std::vector<OdometrySample>& a
 }
 
 RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
-                       const RunOptions& options, ocr::TextSpotter* worker_spotter) {
+                       const RunOptions& options, localize::WorkerSpotters workers) {
   if (!options.oracle && !spotter)
     throw InputError("run: no text spotter given and --oracle not set");
   RunSummary summary;
@@ -82,7 +82,7 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
                                   : sequence.map(),
                               pipeline_options, wrapped,
                               // A spoofing spotter is shared, so the worker is spoofed too.
-                              wrapped == spotter ? worker_spotter : nullptr);
+                              wrapped == spotter ? workers : localize::WorkerSpotters{});
   const auto& timestamps = sequence.timestamps();
   size_t count = timestamps.size();
   if (options.max_frames > 0) count = std::min(count, options.max_frames);

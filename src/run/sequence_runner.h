@@ -80,8 +80,8 @@ std::vector<OdometrySample> odometryBetween(const std::vector<OdometrySample>& a
                                             double until);
 
 // Throws InputError (oracle without labels, spotter missing) and IoError (outputs).
-// `worker_spotter`: the search worker's own spotter (localize::Pipeline).
+// `workers`: the workers' own spotters (localize::Pipeline).
 RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
-                       const RunOptions& options, ocr::TextSpotter* worker_spotter = nullptr);
+                       const RunOptions& options, localize::WorkerSpotters workers = {});
 
 }  // namespace parkloc::run

@@ -679,6 +679,7 @@ class DriveSpotter : public ocr::TextSpotter {
   std::vector<ocr::TextInstance> spot(const cv::Mat& image,
                                       const ocr::SpotRequest& request) override {
     if (request.regions.empty()) ++full_frames;
+    for (const auto& region : request.regions) reads += region.read;
     if (request.regions.empty() && gate) {
       if (gate->wait_for(std::chrono::seconds(20)) != std::future_status::ready) timed_out = true;
     }
@@ -690,6 +691,7 @@ class DriveSpotter : public ocr::TextSpotter {
   std::optional<std::shared_future<void>> gate;
   std::atomic<bool> timed_out{false};
   std::atomic<int> full_frames{0};
+  std::atomic<int> reads{0};  // regions asked to be read, not only fitted
 
  private:
   const geometry::Rig& rig_;
@@ -721,7 +723,7 @@ TEST_F(PipelineTest, ASlowSearchWorkerDelaysNoFrameSet) {
   options.reading.full_frame_interval = 4;  // a sweep every frame set, one camera in turn
   options.realtime.background_search = true;
   options.realtime.wait_for_worker = false;
-  Pipeline pipeline(rig, map, options, &critical, &worker);
+  Pipeline pipeline(rig, map, options, &critical, {&worker, nullptr});
   int handed_over = 0;
   for (int k = 0; k < 12; ++k) {
     const FrameResult r = pipeline.process(driveImages(rig, k, frame(drive, k)));
@@ -763,7 +765,7 @@ TEST_F(PipelineTest, WaitingForTheSearchWorkerGivesTheSamePosesEveryRun) {
     DriveSpotter critical(rig, map, drive), worker(rig, map, drive);
     PipelineOptions options;
     options.realtime.background_search = background;
-    Pipeline pipeline(rig, map, options, &critical, &worker);
+    Pipeline pipeline(rig, map, options, &critical, {&worker, nullptr});
     std::vector<FrameResult> out;
     for (int k = 0; k < 40; ++k) out.push_back(pipeline.process(driveImages(rig, k, frame(drive, k))));
     return out;
@@ -784,6 +786,42 @@ TEST_F(PipelineTest, WaitingForTheSearchWorkerGivesTheSamePosesEveryRun) {
   ASSERT_TRUE(first[1].background.has_value());
   EXPECT_EQ(first[1].background->capture_timestamp, 0.0);
   EXPECT_EQ(first[1].status, TrackingStatus::kOk);
+}
+
+TEST_F(PipelineTest, ReadsOnTheirWorkerLeaveTheFrameSetOnlyFits) {
+  // With background_reads, every read at a predicted place goes to the read worker and comes
+  // back a frame set later; the critical path only fits texts it read lately. The poses stay
+  // as exact, and two runs give the same poses (wait_for_worker).
+  Drive drive;
+  const auto run = [&](std::vector<FrameResult>& out) {
+    DriveSpotter critical(rig, map, drive), search(rig, map, drive), reads(rig, map, drive);
+    PipelineOptions options;
+    options.realtime.background_search = true;
+    options.realtime.background_reads = true;
+    Pipeline pipeline(rig, map, options, &critical, {&search, &reads});
+    for (int k = 0; k < 40; ++k) out.push_back(pipeline.process(driveImages(rig, k, frame(drive, k))));
+    EXPECT_EQ(critical.reads, 0);
+    EXPECT_EQ(critical.full_frames, 0);
+    return reads.reads.load();
+  };
+  std::vector<FrameResult> first, second;
+  EXPECT_GT(run(first), 5);
+  run(second);
+  int fused = 0, deferred = 0;
+  for (int k = 0; k < 40; ++k) {
+    ASSERT_EQ(first[k].has_pose, second[k].has_pose) << k;
+    if (!first[k].has_pose) continue;
+    EXPECT_EQ(first[k].pose.x, second[k].pose.x) << k;
+    EXPECT_LT(positionError(first[k], drive.truth(k / kFrameRate)), 0.01) << k;
+    deferred += static_cast<int>(first[k].deferred_read_cameras.size());
+    if (!first[k].deferred_reads) continue;
+    ++fused;
+    // Fused one frame set after the images it read.
+    EXPECT_NEAR(first[k].deferred_reads->capture_timestamp, (k - 1) / kFrameRate, 1e-9) << k;
+  }
+  EXPECT_GT(deferred, 5);
+  EXPECT_GT(fused, 5);
+  EXPECT_TRUE(first[1].has_pose);
 }
 
 TEST(CaptureTime, TheVehicleMovesAlongAnArc) {

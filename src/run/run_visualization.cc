@@ -1,6 +1,8 @@
 #include "run/run_visualization.h"
 
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <Eigen/Eigenvalues>
 #include <opencv2/imgproc.hpp>
 
@@ -55,6 +57,11 @@ void drawCamera(cv::Mat& canvas, const cv::Rect& where, const cv::Mat& image,
   std::string title =
       camera.camera +
       (camera.full_frame ? "  full frame" : fmt::format("  {} regions", camera.regions));
+  const auto handed = [&](const std::vector<std::string>& cameras) {
+    return std::find(cameras.begin(), cameras.end(), camera.camera) != cameras.end();
+  };
+  if (handed(result.background_cameras)) title += "  full frame to the worker";
+  if (handed(result.deferred_read_cameras)) title += "  reads to the worker";
   if (!camera.image_ok) title += "  (no image)";
   cv::putText(view, title, {8, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.55, {255, 255, 255}, 1,
               cv::LINE_AA);
@@ -130,11 +137,19 @@ cv::Mat drawRunFrame(const VisualizationInput& input, const map::HdMap& map,
                                                                       : cv::Scalar(60, 120, 150);
     cv::polylines(view, polygon, true, colour, 1, cv::LINE_AA);
   }
-  for (const auto& a : result.associations) {
-    if (a.verdict != localize::AssociationVerdict::kAccepted || a.landmark_id.empty()) continue;
-    if (const auto* l = map.findById(a.landmark_id))
-      cv::circle(view, bev.toPixel(l->position.head<2>()), 5, {60, 200, 60}, 2, cv::LINE_AA);
-  }
+  // Landmarks fused this frame set: green from the frame set's own spotting, orange from a
+  // worker's texts of an earlier frame set (late fusion).
+  const auto markAccepted = [&](const std::vector<localize::Association>& associations,
+                                const cv::Scalar& colour, int radius) {
+    for (const auto& a : associations) {
+      if (a.verdict != localize::AssociationVerdict::kAccepted || a.landmark_id.empty()) continue;
+      if (const auto* l = map.findById(a.landmark_id))
+        cv::circle(view, bev.toPixel(l->position.head<2>()), radius, colour, 2, cv::LINE_AA);
+    }
+  };
+  markAccepted(result.associations, {60, 200, 60}, 5);
+  if (result.background) markAccepted(result.background->associations, {0, 140, 255}, 8);
+  if (result.deferred_reads) markAccepted(result.deferred_reads->associations, {0, 140, 255}, 8);
   drawTrajectory(view, bev, input.truth_so_far, {120, 120, 120});
   drawTrajectory(view, bev, input.estimated_so_far, {40, 40, 220});
   if (input.truth_now) drawVehicle(view, bev, *input.truth_now, {120, 120, 120});
@@ -159,8 +174,13 @@ cv::Mat drawRunFrame(const VisualizationInput& input, const map::HdMap& map,
                           (result.pose.translation() - input.truth_now->translation()).norm());
   status += fmt::format("  {:.1f} ms", result.timings.total_ms);
   cv::putText(view, status, {10, 24}, cv::FONT_HERSHEY_SIMPLEX, 0.6, {20, 20, 20}, 1, cv::LINE_AA);
-  cv::putText(view, "red: estimate   grey: truth", {10, 48}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
-              {20, 20, 20}, 1, cv::LINE_AA);
+  cv::putText(view, "red: estimate   grey: truth   orange: fused late", {10, 48},
+              cv::FONT_HERSHEY_SIMPLEX, 0.5, {20, 20, 20}, 1, cv::LINE_AA);
+  if (input.pose_age_ms)
+    cv::putText(view,
+                fmt::format("real time: pose age {:.1f} ms, {} frame sets dropped so far",
+                            *input.pose_age_ms, input.dropped_so_far),
+                {10, 72}, cv::FONT_HERSHEY_SIMPLEX, 0.5, {20, 20, 20}, 1, cv::LINE_AA);
   return canvas;
 }
 

@@ -29,6 +29,10 @@ struct VisualizationInput {
   std::vector<geometry::Pose2> estimated_so_far;
   std::vector<geometry::Pose2> truth_so_far;
   std::optional<geometry::Pose2> truth_now;
+  // A real-time replay's pose age (output time less release time) and the frame sets dropped
+  // so far; unset offline.
+  std::optional<double> pose_age_ms;
+  size_t dropped_so_far = 0;
 };
 
 // A 8-bit BGR frame: a 2x2 grid of camera views (each 640x400) and the bird's-eye view.

@@ -199,6 +199,10 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
       vis.estimated_so_far = estimated;
       vis.truth_so_far = truth_so_far;
       vis.truth_now = truth;
+      if (options.realtime) {
+        vis.pose_age_ms = age_ms;
+        vis.dropped_so_far = summary.frames_dropped;
+      }
       video.write(drawRunFrame(vis, sequence.map(), bev));
     }
     if (options.progress) options.progress(i + 1, count);

@@ -5,6 +5,7 @@
 #   lib/cmake/parkloc/                  the CMake package: find_package(parkloc CONFIG)
 #   share/parkloc/models/               the networks and class heads the spotter loads
 #   share/parkloc/config/default.yaml   every option with its default (parkloc config dump)
+#   share/parkloc/config/realtime.yaml  the overlay for a vehicle: heavy work on worker threads
 include(CMakePackageConfigHelpers)
 set(PARKLOC_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/parkloc)
 
@@ -18,7 +19,7 @@ endif()
 install(DIRECTORY ${PARKLOC_MODEL_DIR}/ DESTINATION ${CMAKE_INSTALL_DATADIR}/parkloc/models
   FILES_MATCHING PATTERN "*.onnx" PATTERN "*.txt" PATTERN "*.yml"
   PATTERN "paddleocr" EXCLUDE)
-install(FILES ${PROJECT_SOURCE_DIR}/data/config/default.yaml
+install(FILES ${PROJECT_SOURCE_DIR}/data/config/default.yaml ${PROJECT_SOURCE_DIR}/data/config/realtime.yaml
   DESTINATION ${CMAKE_INSTALL_DATADIR}/parkloc/config)
 
 install(EXPORT parklocTargets NAMESPACE parkloc:: DESTINATION ${PARKLOC_INSTALL_CMAKEDIR})

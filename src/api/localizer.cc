@@ -13,7 +13,7 @@
 #include "io/calibration_yaml.h"
 #include "io/map_geojson.h"
 #include "localize/pipeline.h"
-#include "ocr/ppocr/pp_ocr_spotter.h"
+#include "config/spotters.h"
 
 namespace parkloc {
 namespace {
@@ -67,16 +67,19 @@ std::string toString(TrackingStatus status) {
 }
 
 struct Localizer::Impl {
-  // Declared before the pipeline, which holds a pointer to it: destroyed after it.
+  // Declared before the pipeline, which holds pointers to them: destroyed after it.
   std::unique_ptr<ocr::TextSpotter> spotter;
+  config::WorkerSpotterSet workers;
   localize::Pipeline pipeline;
   api::FrameAssembly assembly;
   std::string models_dir;
 
-  Impl(std::unique_ptr<ocr::TextSpotter> s, geometry::Rig rig, map::HdMap map,
-       const localize::PipelineOptions& options, double tolerance_s, std::string models)
+  Impl(std::unique_ptr<ocr::TextSpotter> s, config::WorkerSpotterSet w, geometry::Rig rig,
+       map::HdMap map, const localize::PipelineOptions& options, double tolerance_s,
+       std::string models)
       : spotter(std::move(s)),
-        pipeline(rig, std::move(map), options, spotter.get()),
+        workers(std::move(w)),
+        pipeline(rig, std::move(map), options, spotter.get(), workers.pointers()),
         assembly(cameraNames(rig), tolerance_s),
         models_dir(std::move(models)) {}
 
@@ -122,9 +125,10 @@ LocalizerOrError Localizer::create(const LocalizerSettings& settings) {
     chooseModelDir(settings, config.models);
     geometry::Rig rig = io::loadCalibration(settings.calibration_file);
     map::HdMap map = io::loadMap(settings.map_file);
-    auto spotter = std::make_unique<ocr::PpOcrSpotter>(config::spotterOptions(config));
+    auto spotter = config::makeSpotter(config);
+    auto workers = config::makeWorkerSpotters(config);
     out.localizer.emplace(Localizer(std::make_unique<Impl>(
-        std::move(spotter), std::move(rig), std::move(map), config.pipeline,
+        std::move(spotter), std::move(workers), std::move(rig), std::move(map), config.pipeline,
         settings.frame_set_tolerance_s, config::modelDirectory(config.models))));
   } catch (const std::exception& e) {
     out.localizer.reset();

@@ -18,6 +18,11 @@ void describe(OptionVisitor& v, ocr::GroundViewOptions& o) {
           "where the view starts ahead of the camera (negative: behind; a fisheye sees beside)");
   v.value("far", o.far, "metres ahead of the camera");
   v.value("half_width", o.half_width, "metres to each side of the camera");
+  v.value("reference_focal_px", o.reference_focal_px,
+          "far and half_width are for this focal length; a camera's reach scales by fx over it "
+          "(0: as given)");
+  v.value("max_extent_scale", o.max_extent_scale,
+          "... by at most this: the view's area and detection time grow with its square");
 }
 
 void describe(OptionVisitor& v, ocr::LexiconOptions& o) {

@@ -14,8 +14,8 @@ namespace parkloc::eval {
 struct FrameTiming {
   double total_ms = 0.0;
   std::map<std::string, double> stage_ms;
-  // Off the critical path: the search worker's time on the full frames whose texts were fused
-  // in this frame set (localize/search_worker.h); 0: none were.
+  // Off the critical path: the workers' time on the full frames and reads whose texts were
+  // fused in this frame set (localize/search_worker.h); 0: none were.
   double worker_ms = 0.0;
 };
 
@@ -24,7 +24,7 @@ struct LatencyReport {
   // A stage missing from a frame counts as 0 ms there (it did not run).
   std::map<std::string, Summary> stage_ms;
   std::map<std::string, std::vector<double>> samples_ms;  // for histograms; "total" included
-  // The search worker's time per job, over the frame sets that fused one (empty: no worker).
+  // The workers' time per frame set that fused their texts (empty: no worker).
   Summary worker_ms;
   std::vector<double> worker_samples_ms;
 };

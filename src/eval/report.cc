@@ -305,15 +305,15 @@ std::string reportHtml(const EvaluationReport& r) {
   if (const auto it = m.latency.samples_ms.find("total"); it != m.latency.samples_ms.end()) {
     rows.push_back({"total (critical path)", it->second});
   }
-  // The search worker's full frames run beside the frame sets, which do not wait for them.
+  // The workers' full frames and reads run beside the frame sets, which do not wait for them.
   if (!m.latency.worker_samples_ms.empty())
-    rows.push_back({"search worker (per job)", m.latency.worker_samples_ms});
+    rows.push_back({"workers (per frame set fusing their texts)", m.latency.worker_samples_ms});
   PlotOptions lat;
   lat.width = 1200;
   lat.height = 70 + 34 * static_cast<int>(rows.size());
   lat.title =
-      "Latency per frame set: the critical path's stages and total, and the search worker's "
-      "jobs beside it; bar 5th-95th percentile, tick median, dot 99th";
+      "Latency per frame set: the critical path's stages and total, and the workers' jobs "
+      "beside it; bar 5th-95th percentile, tick median, dot 99th";
   lat.x_label = "ms";
   s += figure(rangePlot(rows, lat));
 

@@ -377,7 +377,7 @@ Table latencyTable(const std::vector<VariantResult>& variants) {
     row("total", v.latency.total_ms);
     // Not part of the total: the frame sets do not wait for it.
     if (!v.latency.worker_samples_ms.empty())
-      row("search worker, off the critical path (per job)", v.latency.worker_ms);
+      row("workers, off the critical path (per frame set fusing their texts)", v.latency.worker_ms);
   }
   return t;
 }

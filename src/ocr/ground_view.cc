@@ -1,5 +1,6 @@
 #include "ocr/ground_view.h"
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -10,8 +11,19 @@ namespace parkloc::ocr {
 // Everything here is in metres on the floor, and the view's pixels are `resolution` metres
 // whatever the camera's image size and lens: a number shows as large in every rig's view as the
 // floor detector learnt it; the calibration alone maps view pixels to raw ones.
-GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOptions& options)
-    : camera_(camera), options_(options) {
+GroundViewOptions extentsFor(const geometry::RigCamera& camera, const GroundViewOptions& options) {
+  GroundViewOptions out = options;
+  if (options.reference_focal_px <= 0.0 || !(camera.model.fx > 0.0)) return out;
+  const double scale = std::min(camera.model.fx / options.reference_focal_px,
+                                std::max(1.0, options.max_extent_scale));
+  out.far *= scale;
+  out.half_width *= scale;
+  return out;
+}
+
+GroundView::GroundView(const geometry::RigCamera& camera, const GroundViewOptions& view_options)
+    : camera_(camera), options_(extentsFor(camera, view_options)) {
+  const GroundViewOptions& options = options_;
   const Eigen::Vector3d axis = camera.vehicle_from_camera.linear().col(2);
   Eigen::Vector2d forward = axis.head<2>();
   if (forward.norm() < 1e-6) forward = Eigen::Vector2d::UnitX();  // looking straight down

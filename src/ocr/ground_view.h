@@ -21,7 +21,17 @@ struct GroundViewOptions {
   double near = -1.5;
   double far = 6.0;
   double half_width = 6.0;  // to each side
+  // `far` and `half_width` were chosen for cameras of this focal length (pixels per radian,
+  // the default rig's). A camera that resolves more sees a number as many pixels across
+  // proportionally farther away (a text w wide at distance d spans f w / d pixels), so its view
+  // reaches farther by fx / reference_focal_px, at most max_extent_scale times: the view's
+  // area, and the detector's time, grow with the square. 0: the extents as given.
+  double reference_focal_px = 365.0;
+  double max_extent_scale = 1.5;
 };
+
+// The extents of `options` for `camera` (GroundViewOptions::reference_focal_px).
+GroundViewOptions extentsFor(const geometry::RigCamera& camera, const GroundViewOptions& options);
 
 class GroundView {
  public:

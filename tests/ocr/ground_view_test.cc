@@ -157,10 +157,14 @@ TEST(GroundView, TheFloorBehindTheCarsBodyIsLeftOutAndTheViewCroppedToWhatShows)
 // resolution (every pixel length doubled) gives the same view, pixel for pixel, of the same
 // ground, sampled at twice the raw coordinates; only the view's resolution sets its size.
 TEST(GroundView, AViewDerivesFromTheCalibrationNotItsPixelCount) {
+  // With the extents held in metres (no reach that follows the focal length), a camera of
+  // twice the pixels sees the same ground in the same view pixels.
+  GroundViewOptions metres;
+  metres.reference_focal_px = 0.0;
   for (const auto& camera : geometry::defaultRig().cameras) {
     geometry::RigCamera twice = camera;
     twice.model = testing::scaledCamera(camera.model, 2);
-    const GroundView view(camera), view_twice(twice);
+    const GroundView view(camera, metres), view_twice(twice, metres);
     ASSERT_EQ(view.size(), view_twice.size()) << camera.name;
     for (const cv::Point2f p : {cv::Point2f(0, 0), cv::Point2f(100.5f, 37), cv::Point2f(250, 190)}) {
       EXPECT_LT((view.groundFromView(p) - view_twice.groundFromView(p)).norm(), 1e-9);
@@ -172,12 +176,32 @@ TEST(GroundView, AViewDerivesFromTheCalibrationNotItsPixelCount) {
     }
     // Half the metres per pixel: the same ground in twice the pixels a side (up to the 32 px
     // rounding of the view's sides and the crop's margin).
-    GroundViewOptions fine;
+    GroundViewOptions fine = metres;
     fine.resolution = 0.0075;
     const GroundView view_fine(twice, fine);
     EXPECT_NEAR(view_fine.size().width, 2 * view.size().width, 96) << camera.name;
     EXPECT_NEAR(view_fine.size().height, 2 * view.size().height, 96) << camera.name;
   }
+}
+
+TEST(GroundView, AViewReachesFartherForACameraThatResolvesMore) {
+  geometry::RigCamera camera = geometry::defaultRig().cameras[0];
+  const GroundViewOptions options;  // far 6 m, half width 6 m at 365 px per radian
+  EXPECT_DOUBLE_EQ(extentsFor(camera, options).far, options.far);  // the default rig's own
+  camera.model.fx = 500.0;
+  const GroundViewOptions longer = extentsFor(camera, options);
+  EXPECT_NEAR(longer.far, 6.0 * 500.0 / 365.0, 1e-9);
+  EXPECT_NEAR(longer.half_width, 6.0 * 500.0 / 365.0, 1e-9);
+  EXPECT_DOUBLE_EQ(longer.near, options.near);  // the floor beside the camera stays
+  EXPECT_GT(GroundView(camera, options).size().area(), GroundView(camera, GroundViewOptions{
+      options.resolution, options.near, options.far, options.half_width, 0.0}).size().area());
+  camera.model.fx = 3000.0;
+  EXPECT_NEAR(extentsFor(camera, options).far, 6.0 * options.max_extent_scale, 1e-9);
+  camera.model.fx = 250.0;  // a camera that resolves less looks less far
+  EXPECT_NEAR(extentsFor(camera, options).far, 6.0 * 250.0 / 365.0, 1e-9);
+  GroundViewOptions as_given = options;
+  as_given.reference_focal_px = 0.0;
+  EXPECT_DOUBLE_EQ(extentsFor(camera, as_given).far, options.far);
 }
 
 }  // namespace

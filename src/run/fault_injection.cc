@@ -73,6 +73,15 @@ void expectFields(const std::string& item, const std::vector<std::string>& field
   if (fields.size() != n) bad(item, fmt::format("expected {}", form));
 }
 
+// FAKE@REAL: the text read in place of the real one.
+SpoofedSign fakeAtReal(const std::string& item, const std::string& text) {
+  const auto at = split(text, '@');
+  if (at.size() != 2 || at[0].empty() || at[1].empty())
+    bad(item, fmt::format("'{}' is not FAKE@REAL", text));
+  if (at[0] == at[1]) bad(item, "the fake text equals the real one");
+  return {at[0], at[1], std::nullopt};
+}
+
 void parseItem(const std::string& item, InputFaults& f) {
   const auto fields = split(item, ':');
   const std::string& kind = fields[0];
@@ -97,18 +106,12 @@ void parseItem(const std::string& item, InputFaults& f) {
     f.yaw_rate_bias += number(item, "yaw-rate bias", fields[1]);
   } else if (kind == "spoof") {
     expectFields(item, fields, 2, "spoof:FAKE@REAL");
-    const auto at = split(fields[1], '@');
-    if (at.size() != 2 || at[0].empty() || at[1].empty())
-      bad(item, fmt::format("'{}' is not FAKE@REAL", fields[1]));
-    if (at[0] == at[1]) bad(item, "the fake text equals the real one");
-    f.spoofs.push_back({at[0], at[1], std::nullopt});
+    f.spoofs.push_back(fakeAtReal(item, fields[1]));
   } else if (kind == "misread") {
     expectFields(item, fields, 3, "misread:FAKE@REAL:T0-T1");
-    const auto at = split(fields[1], '@');
-    if (at.size() != 2 || at[0].empty() || at[1].empty())
-      bad(item, fmt::format("'{}' is not FAKE@REAL", fields[1]));
-    if (at[0] == at[1]) bad(item, "the misread text equals the real one");
-    f.spoofs.push_back({at[0], at[1], timeRange(item, fields[2])});
+    SpoofedSign misread = fakeAtReal(item, fields[1]);
+    misread.during = timeRange(item, fields[2]);
+    f.spoofs.push_back(misread);
   } else if (kind == "kidnap") {
     if (fields.size() != 2 && fields.size() != 3) bad(item, "expected kidnap:TIME[:METRES]");
     Kidnap k;

@@ -21,7 +21,7 @@ std::string sixFurther(const std::string& text) {
 }
 
 // Reads the synthetic aisle the way the OCR engine does. A full frame shows what the camera
-// sees; the first one that sees text shows only its largest text, misread as
+// sees; the first one that sees a parking number shows only its largest one, misread as
 // sixFurther(text) when `misread`. A region finds the ink nearest its predicted text (within
 // half the text's width): fitted, it carries the expected text unread; read, it carries the
 // ink's own text when the request's lexicon holds it, else the expected text (decoding
@@ -33,12 +33,18 @@ class EngineLikeSpotter : public ocr::TextSpotter {
   std::vector<ocr::TextInstance> spot(const cv::Mat&, const ocr::SpotRequest& request) override {
     std::vector<ocr::TextInstance> all = testing::spotExactly(*request.camera, map_, pose, {});
     if (request.regions.empty()) {
-      if (first_text_seen || all.empty()) return all;
+      const auto number = [](const ocr::TextInstance& t) {
+        return t.cls == map::TextClass::kParkingNumber;
+      };
+      if (first_text_seen || std::none_of(all.begin(), all.end(), number)) return all;
       first_text_seen = true;
-      const auto largest = std::max_element(all.begin(), all.end(), [](const auto& a, const auto& b) {
-        return cv::contourArea(std::vector<cv::Point2f>(a.polygon.begin(), a.polygon.end())) <
-               cv::contourArea(std::vector<cv::Point2f>(b.polygon.begin(), b.polygon.end()));
-      });
+      all.erase(std::remove_if(all.begin(), all.end(), [&](const auto& t) { return !number(t); }),
+                all.end());
+      const auto size = [](const ocr::TextInstance& t) {
+        return cv::norm(t.polygon[1] - t.polygon[0]) * cv::norm(t.polygon[3] - t.polygon[0]);
+      };
+      const auto largest = std::max_element(
+          all.begin(), all.end(), [&](const auto& a, const auto& b) { return size(a) < size(b); });
       ocr::TextInstance only = *largest;
       if (misread_) only.text = only.raw_text = sixFurther(only.text);
       first_text = only.text;

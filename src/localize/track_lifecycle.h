@@ -15,9 +15,10 @@
 //    pose the map predicts texts where other texts are painted, and fitting their ink at
 //    the predicted place (which labels it with the expected text) seems to confirm it. So
 //    the track stays tentative until enough distinct landmarks have been read consistently
-//    with it; until then the spotter reads its regions against the whole map's texts
-//    (read_planning.h), a fix from reads that disagree is sought even when the fits agree
-//    (parkloc_measurement.h), and a consistent one re-initialises the filter at once.
+//    with it; until then the spotter reads its regions against the whole map's texts and
+//    sweeps one camera's full frame every frame set (read_planning.h), a fix from reads
+//    that disagree is sought even when the fits agree (parkloc_measurement.h), and a
+//    consistent one re-initialises the filter at once.
 #include <Eigen/Core>
 #include <map>
 #include <optional>

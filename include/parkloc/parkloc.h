@@ -87,6 +87,9 @@ struct PoseEstimate {
   std::string level;
   double level_probability = 0.0;
   bool level_decided = false;
+  // The pose rests on one landmark's reading, not yet confirmed by a second landmark read
+  // consistently with it: it may come from a misreading and may jump when one is found.
+  bool tentative = false;
   std::vector<std::string> cameras;   // the cameras whose images the set held
   std::vector<std::string> warnings;  // dropped inputs, unreadable images, the pipeline's notes
 };

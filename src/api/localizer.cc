@@ -107,6 +107,7 @@ struct Localizer::Impl {
     out.level = result.level;
     out.level_probability = result.level_probability;
     out.level_decided = result.level_decided;
+    out.tentative = result.tentative;
     out.warnings.insert(out.warnings.end(), result.warnings.begin(), result.warnings.end());
     return out;
   }

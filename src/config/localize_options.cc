@@ -60,6 +60,10 @@ void describe(OptionVisitor& v, localize::ReadingOptions& o) {
           "regions read per frame set, the largest unread first (<= 0: no limit)");
   v.value("tracked_min_height_px", o.tracked_min_height_px,
           "predicted text flatter than this is not fitted: its corners would not fix the pose");
+  v.value("tentative_reads_whole_lexicon", o.tentative_reads_whole_lexicon,
+          "a tentative track reads regions against every map text, not the predicted one");
+  v.value("tentative_full_frame_interval", o.tentative_full_frame_interval,
+          "a tentative track sweeps each camera once per this many frame sets (<= 1: as tracking)");
   v.value("sweep_detection_scale", o.sweep_detection_scale,
           "the tracking sweep's detector input scale: it only catches what the prediction missed");
   v.value("sweep_places_floor_texts", o.sweep_places_floor_texts,
@@ -160,6 +164,10 @@ void describe(OptionVisitor& v, localize::TrackingOptions& o) {
           "a fix is fused within this squared Mahalanobis distance, 3 dof (16.3: 99.9 %)");
   v.value("reinit_after_rejected_fixes", o.reinit_after_rejected_fixes,
           "consistent fixes outside the gate that re-initialise the track (a kidnap)");
+  v.value("confirm_read_landmarks", o.confirm_read_landmarks,
+          "a track is tentative until this many distinct landmarks were read with it (fits: no)");
+  v.value("tentative_reinit_after_rejected_fixes", o.tentative_reinit_after_rejected_fixes,
+          "consistent fixes from reads that re-initialise a tentative track (x2 on one landmark)");
   v.value("reinit_consistency_m", o.reinit_consistency_m,
           "two gated-out fixes agree within this distance, carried by the motion");
   v.value("reinit_consistency_deg", o.reinit_consistency_deg, "... and this heading");

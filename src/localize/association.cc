@@ -95,6 +95,9 @@ AssociatedObservations Associator::associate(const std::vector<CameraResult>& ca
           o.tag = tag;
           o.use_corners = use_corners;
           o.accuracy = landmark.accuracy;
+          // A text the map has at several places (a level sign, a pillar's faces) is
+          // associated by the predicted pose, so it cannot tell that the pose is wrong.
+          o.read = instance.read && !instance.second_opinion && candidates.size() == 1;
           return o;
         };
         LandmarkObservation o;

@@ -132,6 +132,9 @@ struct FrameResult {
   bool solver_converged = false;
   int solver_iterations = 0;
   bool reinitialised = false;  // the filter was reset from the solver this frame
+  // The pose rests on a single landmark's reading, not yet confirmed by a second one read
+  // consistently with it (track_lifecycle.h): it may come from one misreading.
+  bool tentative = false;
   // The level driven on (level_estimate.h): the most probable one, its probability, and
   // whether it is decided. An undecided level with a pose: the levels share the places seen.
   std::string level;

@@ -4,9 +4,14 @@
 
 namespace parkloc::localize {
 
-FullFrameChoice FullFrameSchedule::next(size_t n_cameras, bool tracking, bool initialised) {
+FullFrameChoice FullFrameSchedule::next(size_t n_cameras, bool tracking, bool initialised,
+                                        bool tentative) {
   FullFrameChoice choice;
-  const int interval = std::max(1, options_.full_frame_interval);
+  int interval = std::max(1, options_.full_frame_interval);
+  // A tentative track sweeps more often: what the wrong pose's prediction misses is the
+  // texts that would tell it is wrong.
+  if (tentative && options_.tentative_full_frame_interval > 1)
+    interval = std::min(interval, options_.tentative_full_frame_interval);
   choice.all = !guided_ || !tracking || interval == 1 ||
                (!options_.full_frame_round_robin && frames_since_full_frame_ + 1 >= interval);
   frames_since_full_frame_ = choice.all ? 0 : frames_since_full_frame_ + 1;

@@ -24,6 +24,12 @@ struct LandmarkObservation {
   // What the map states of the landmark's accuracy (empty: the solver's assumption,
   // SolverOptions::assumed_map_*).
   map::MapAccuracy accuracy;
+  // Recognised by OCR as a text the map has at this landmark's place alone. False for a
+  // corner fit at the place the filter predicts (it labels the ink with the text it expects
+  // without reading it), for a second opinion and for a text the map has at several places
+  // (the predicted pose chose among them): none of them can tell that the filter is at the
+  // wrong place (track_lifecycle.h, the tentative track).
+  bool read = true;
 };
 
 // What a text's polygon measures in the solver. Corners: all four corners (exact polygons,

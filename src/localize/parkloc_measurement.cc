@@ -19,14 +19,19 @@ void markSolve(const std::vector<LandmarkObservation>& obs, const SolverResult& 
   }
 }
 
-// The distinct landmarks among the solve's inliers.
+// The distinct landmarks among the solve's inliers (only those read by OCR: `read_only`).
 std::vector<std::string> landmarkIds(const std::vector<LandmarkObservation>& obs,
-                                     const SolverResult& s) {
+                                     const std::vector<bool>& inlier, bool read_only = false) {
   std::vector<std::string> ids;
-  for (size_t o = 0; o < obs.size() && o < s.inlier.size(); ++o)
-    if (s.inlier[o] && std::find(ids.begin(), ids.end(), obs[o].landmark_id) == ids.end())
+  for (size_t o = 0; o < obs.size() && o < inlier.size(); ++o)
+    if (inlier[o] && (obs[o].read || !read_only) &&
+        std::find(ids.begin(), ids.end(), obs[o].landmark_id) == ids.end())
       ids.push_back(obs[o].landmark_id);
   return ids;
+}
+std::vector<std::string> landmarkIds(const std::vector<LandmarkObservation>& obs,
+                                     const SolverResult& s) {
+  return landmarkIds(obs, s.inlier);
 }
 int landmarksIn(const std::vector<LandmarkObservation>& obs, const SolverResult& s) {
   return static_cast<int>(landmarkIds(obs, s).size());
@@ -48,13 +53,20 @@ Eigen::Matrix3d fixCovariance(const SolverResult& fix, double pixel_sigma,
 
 PoseFix ParklocMeasurement::toFix(const SolverResult& solve,
                                   const std::vector<LandmarkObservation>& obs) const {
-  return {solve.pose, fixCovariance(solve, solver_.pixel_sigma, options_), solve.map_covariance,
-          landmarkIds(obs, solve), options_.map_covariance_floor * solve.map_covariance};
+  PoseFix fix;
+  fix.pose = solve.pose;
+  fix.covariance = fixCovariance(solve, solver_.pixel_sigma, options_);
+  fix.map_part = solve.map_covariance;
+  fix.landmarks = landmarkIds(obs, solve);
+  fix.read_landmarks = landmarkIds(obs, solve.inlier, true);
+  fix.floor = options_.map_covariance_floor * solve.map_covariance;
+  return fix;
 }
 
 FrameFixes ParklocMeasurement::whileTracking(const std::vector<LandmarkObservation>& accepted,
                                              const std::vector<LandmarkObservation>& gated,
-                                             const PoseEkf& ekf, FrameResult& result) const {
+                                             const PoseEkf& ekf, bool tentative,
+                                             FrameResult& result) const {
   FrameFixes fixes;
   if (!accepted.empty()) {
     const SolverResult s = solvePose(rig_, accepted, ekf.pose(), solver_);
@@ -76,7 +88,38 @@ FrameFixes ParklocMeasurement::whileTracking(const std::vector<LandmarkObservati
       result.warnings.push_back("solver: " + s.failure);
     }
   }
-  if (!fixes.agreeing && !gated.empty()) {
+  if (tentative && !fixes.disagreeing) {
+    // A tentative track may rest on one misreading, and the fits that agree with it read
+    // nothing: do the texts read this frame set, some of them gated away, place the
+    // vehicle consistently somewhere else?
+    std::vector<LandmarkObservation> reads;
+    bool some_gated = false;
+    for (const auto* list : {&accepted, &gated})
+      for (const LandmarkObservation& o : *list)
+        if (o.read) {
+          reads.push_back(o);
+          some_gated = some_gated || list == &gated;
+        }
+    if (some_gated) {
+      const SolverResult s = solvePose(rig_, reads, std::nullopt, solver_);
+      if (s.ok) {
+        const PoseFix fix = toFix(s, reads);
+        // Certain enough to start a filter with (first_fix_max_sigma_m) and outside the gate.
+        const bool certain = tracking_.first_fix_max_sigma_m <= 0.0 ||
+                             positionSigma(fix.covariance) <= tracking_.first_fix_max_sigma_m;
+        if (certain && ekf.mahalanobis2(fix.pose, fix.covariance) > tracking_.fix_gate_chi2) {
+          fixes.disagreeing = fix;
+          fixes.disagreeing_landmarks = landmarksIn(reads, s);
+          result.warnings.push_back("tentative track: the texts read place the vehicle elsewhere");
+          if (!result.measurement) {
+            result.measurement = fix.pose;
+            result.measurement_covariance = fix.covariance;
+          }
+        }
+      }
+    }
+  }
+  if (!fixes.agreeing && !fixes.disagreeing && !gated.empty()) {
     // Everything seen is far from the prediction: is it a consistent other place?
     std::vector<LandmarkObservation> all = accepted;
     all.insert(all.end(), gated.begin(), gated.end());
@@ -103,6 +146,8 @@ FrameFixes ParklocMeasurement::whileSearching(const std::vector<LandmarkObservat
   // This frame set's texts and those of the last few, carried by odometry.
   const SearchWindow::Combined all = window.combine(rig_, accepted);
   SolverResult s = solvePose(all.rig, all.observations, std::nullopt, solver_);
+  // The window's texts count towards the landmarks the fix rests on.
+  std::vector<std::string> read_landmarks = landmarkIds(all.observations, s.inlier, true);
   s.residual_px.resize(std::min(s.residual_px.size(), all.current));
   s.inlier.resize(std::min(s.inlier.size(), all.current));
   result.solver_iterations = s.iterations;
@@ -114,7 +159,8 @@ FrameFixes ParklocMeasurement::whileSearching(const std::vector<LandmarkObservat
     return fixes;
   }
   // Reported whether or not it starts the filter.
-  const PoseFix fix = toFix(s, accepted);
+  PoseFix fix = toFix(s, accepted);
+  fix.read_landmarks = std::move(read_landmarks);
   result.measurement = fix.pose;
   result.measurement_covariance = fix.covariance;
   const double sigma = positionSigma(fix.covariance);

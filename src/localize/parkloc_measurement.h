@@ -52,10 +52,13 @@ class ParklocMeasurement {
       : rig_(rig), solver_(solver), options_(options), tracking_(tracking) {}
 
   // While tracking: the solve from the prediction on the accepted texts; when it gives no
-  // fix within the gate, the solve on the gated texts too (a consistent other place?).
+  // fix within the gate, the solve on the gated texts too (a consistent other place?). On a
+  // `tentative` track (track_lifecycle.h) the texts read this frame set, when some were
+  // gated away, are solved on their own as well, even when the fix agrees: the fits that
+  // agree with a wrong pose read nothing.
   FrameFixes whileTracking(const std::vector<LandmarkObservation>& accepted,
                            const std::vector<LandmarkObservation>& gated, const PoseEkf& ekf,
-                           FrameResult& result) const;
+                           bool tentative, FrameResult& result) const;
 
   // While searching: the accepted texts with those of the search window. A certain fix
   // empties the window; otherwise this frame set's texts join it.

@@ -149,7 +149,8 @@ struct Pipeline::Impl {
 
     // 2. Read planning: map-guided regions while tracking, the full frame now and then.
     const Stopwatch planning_time;
-    ReadPlan plan = reading.plan(tracking, ekf, level, search_lane.worker != nullptr);
+    ReadPlan plan = reading.plan(tracking, ekf, level, search_lane.worker != nullptr,
+                                 tracking && lifecycle.tentative());
     if (search_lane.worker) handOverFullFrames(frame, plan, result);
     if (read_lane.worker && tracking) handOverReads(frame, plan, result);
     result.timings.roi_ms += planning_time.elapsedMs();
@@ -312,7 +313,8 @@ struct Pipeline::Impl {
     const Stopwatch solve_time;
     FrameFixes fixes;
     if (tracking_then) {
-      fixes = measurement.whileTracking(seen.accepted, seen.gated, then.ekf, late);
+      fixes = measurement.whileTracking(seen.accepted, seen.gated, then.ekf,
+                                        lifecycle.tentative(), late);
       lifecycle.searchWindow().clear();
     } else {
       // The search window holds its texts in the vehicle frame now: back to then and forth.
@@ -345,7 +347,8 @@ struct Pipeline::Impl {
     const Stopwatch solve_time;
     const bool was_tracking = isTracking(ekf, options.tracking);
     const FrameFixes fixes =
-        was_tracking ? measurement.whileTracking(seen.accepted, seen.gated, ekf, result)
+        was_tracking ? measurement.whileTracking(seen.accepted, seen.gated, ekf,
+                                                   lifecycle.tentative(), result)
                      : measurement.whileSearching(seen.accepted, lifecycle.searchWindow(), result);
     result.timings.solver_ms += solve_time.elapsedMs();
     if (was_tracking) lifecycle.searchWindow().clear();

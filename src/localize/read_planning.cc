@@ -32,13 +32,14 @@ void ReadPlanner::reset() {
 }
 
 ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimate& level,
-                           bool full_frames_elsewhere) {
+                           bool full_frames_elsewhere, bool tentative) {
   ++frame_index_;
   const size_t n_cameras = rig_.cameras.size();
   ReadPlan plan;
   plan.tracking = tracking;
+  plan.tentative = tentative && options_.tentative_reads_whole_lexicon;
   plan.level = level.restriction();
-  plan.choice = schedule_.next(n_cameras, tracking, ekf.initialised());
+  plan.choice = schedule_.next(n_cameras, tracking, ekf.initialised(), tentative);
   plan.regions.resize(n_cameras);
   if (plan.choice.all) return plan;
 
@@ -147,6 +148,7 @@ ocr::SpotRequest ReadPlanner::request(size_t c, ReadPlan& plan, const geometry::
                              r.roi.expected_texts.end());
       request.regions.push_back(std::move(r.roi));
     }
+    if (plan.tentative && !request.regions.empty()) request.lexicon = lexicon_;
     return request;
   }
   request.lexicon = lexicon_;

@@ -90,6 +90,16 @@ struct ReadingOptions {
   // Predicted text flatter than this (pixels) is not fitted: its corners would not fix the
   // pose.
   double tracked_min_height_px = 8.0;
+  // While the track is tentative (track_lifecycle.h), a region is read against every text
+  // of the map, not only the text the pose predicts there: under a pose from one misreading
+  // the number painted at a predicted place is another one, and decoding it against the
+  // predicted text alone can force that text onto it.
+  bool tentative_reads_whole_lexicon = true;
+  // While the track is tentative, each camera is swept on the full frame once per this many
+  // frame sets (4 on a four-camera rig: one camera every frame set): under a wrong pose the
+  // map-guided regions may hold no text at all, and the sweep reads what tells it is wrong.
+  // <= 1: as while tracking (full_frame_interval).
+  int tentative_full_frame_interval = 4;
 
   // While tracking, the full-frame sweep's detector input is scaled by this (it only has to
   // catch what the prediction missed). Chosen on the validation drives: the same mean error
@@ -129,8 +139,9 @@ class FullFrameSchedule {
       : options_(options), guided_(guided) {}
   void reset() { *this = FullFrameSchedule(options_, guided_); }
   // `tracking`: the filter's pose is good enough to predict regions; `initialised`: the
-  // filter has a pose at all (lost or not).
-  FullFrameChoice next(size_t n_cameras, bool tracking, bool initialised);
+  // filter has a pose at all (lost or not); `tentative`: the track is tentative
+  // (tentative_full_frame_interval).
+  FullFrameChoice next(size_t n_cameras, bool tracking, bool initialised, bool tentative = false);
 
  private:
   ReadingOptions options_;
@@ -147,6 +158,7 @@ struct ReadPlan {
   bool tracking = false;
   std::vector<std::vector<RegionCandidate>> regions;  // per rig camera, the regions to spot
   std::string level;                                  // map level of the plan ("": all)
+  bool tentative = false;  // the track is tentative: regions are read against the whole map
 };
 
 class ReadPlanner {
@@ -163,9 +175,9 @@ class ReadPlanner {
   // one, else every level, a shared place read once for any of its texts).
   // `full_frames_elsewhere`: the full frames are spotted off the frame set's critical path
   // (search_worker.h), so a sweep's camera gets its regions as well and a sweep costs the
-  // frame set none of its reads.
+  // frame set none of its reads. `tentative`: the track is tentative (track_lifecycle.h).
   ReadPlan plan(bool tracking, const PoseEkf& ekf, const LevelEstimate& level,
-                bool full_frames_elsewhere = false);
+                bool full_frames_elsewhere = false, bool tentative = false);
 
   // Camera c's request (its regions are moved out of the plan).
   ocr::SpotRequest request(size_t c, ReadPlan& plan, const geometry::Pose2& pose) const;

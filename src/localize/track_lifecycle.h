@@ -10,6 +10,15 @@
 //    starts the filter again.
 //  - Kidnapped: fixes that agree with each other but not with the filter (a vehicle moved
 //    without odometry, or a filter gone wrong) re-initialise it after a few frame sets.
+//  - Tentative: a filter started (or re-initialised) from a fix that rests on fewer than
+//    confirm_read_landmarks landmarks read by OCR may rest on one misreading. Under a wrong
+//    pose the map predicts texts where other texts are painted, and fitting their ink at
+//    the predicted place (which labels it with the expected text) seems to confirm it. So
+//    the track stays tentative until enough distinct landmarks have been read consistently
+//    with it; until then the spotter reads its regions against the whole map's texts and
+//    sweeps one camera's full frame every frame set (read_planning.h), a fix from reads
+//    that disagree is sought even when the fits agree (parkloc_measurement.h), and a
+//    consistent one re-initialises the filter at once.
 #include <Eigen/Core>
 #include <map>
 #include <optional>
@@ -40,6 +49,15 @@ struct TrackingOptions {
   // them rests on two or more landmarks; twice as many when each rests on a single landmark
   // (which a misreading can move).
   int reinit_after_rejected_fixes = 3;
+  // A filter started from a fix with fewer than this many distinct landmarks read by OCR
+  // among its inliers is tentative until that many have been read and accepted with it; a
+  // corner fit at the predicted place does not count (it reads nothing). <= 1: every track
+  // is confirmed from its start.
+  int confirm_read_landmarks = 2;
+  // While tentative, consecutive consistent fixes from reads outside the gate that
+  // re-initialise the filter when one rests on two or more read landmarks; twice as many
+  // when each rests on one (a single misreading can make one).
+  int tentative_reinit_after_rejected_fixes = 1;
   // Two fixes outside the gate are consistent when the second lies within this distance
   // (metres) and heading (degrees) of the first carried along by the filter's motion.
   double reinit_consistency_m = 1.0;
@@ -69,6 +87,8 @@ struct PoseFix {
   // repeat, and the landmarks it comes from (the solve's inliers).
   Eigen::Matrix3d map_part = Eigen::Matrix3d::Zero();
   std::vector<std::string> landmarks;
+  // Those of them read by OCR (LandmarkObservation::read).
+  std::vector<std::string> read_landmarks;
   // Fusing the fix does not take the filter below this (PoseEkf::update).
   Eigen::Matrix3d floor = Eigen::Matrix3d::Zero();
 };
@@ -101,6 +121,9 @@ class TrackLifecycle {
   // came this frame set).
   void report(const PoseEkf& ekf, FrameResult& result) const;
 
+  // The filter rests on fewer read landmarks than confirm_read_landmarks.
+  bool tentative() const { return tentative_; }
+
  private:
   TrackingOptions options_;
   SearchWindow search_window_;
@@ -111,6 +134,16 @@ class TrackLifecycle {
   bool disagreeing_with_consensus_ = false;  // one of them had two or more landmarks
   geometry::Pose2 last_disagreeing_fix_;
   geometry::Pose2 predicted_at_last_disagreeing_fix_;
+  // The tentative track and the distinct landmarks read consistently with it so far.
+  bool tentative_ = false;
+  std::vector<std::string> confirming_reads_;
+
+  // The filter starts (or restarts) from `fix`: tentative unless it rests on enough reads.
+  void start(const PoseFix& fix, PoseEkf& ekf, double timestamp);
+  // Counts a disagreeing fix towards re-initialisation; true when it re-initialised.
+  bool countDisagreeing(const FrameFixes& fixes, PoseEkf& ekf, FrameResult& result);
+  // Reads accepted with the tentative track; confirms it when there are enough.
+  void noteConfirmingReads(const PoseFix& fix, FrameResult& result);
 };
 
 }  // namespace parkloc::localize

@@ -73,6 +73,15 @@ void expectFields(const std::string& item, const std::vector<std::string>& field
   if (fields.size() != n) bad(item, fmt::format("expected {}", form));
 }
 
+// FAKE@REAL: the text read in place of the real one.
+SpoofedSign fakeAtReal(const std::string& item, const std::string& text) {
+  const auto at = split(text, '@');
+  if (at.size() != 2 || at[0].empty() || at[1].empty())
+    bad(item, fmt::format("'{}' is not FAKE@REAL", text));
+  if (at[0] == at[1]) bad(item, "the fake text equals the real one");
+  return {at[0], at[1], std::nullopt};
+}
+
 void parseItem(const std::string& item, InputFaults& f) {
   const auto fields = split(item, ':');
   const std::string& kind = fields[0];
@@ -97,11 +106,12 @@ void parseItem(const std::string& item, InputFaults& f) {
     f.yaw_rate_bias += number(item, "yaw-rate bias", fields[1]);
   } else if (kind == "spoof") {
     expectFields(item, fields, 2, "spoof:FAKE@REAL");
-    const auto at = split(fields[1], '@');
-    if (at.size() != 2 || at[0].empty() || at[1].empty())
-      bad(item, fmt::format("'{}' is not FAKE@REAL", fields[1]));
-    if (at[0] == at[1]) bad(item, "the fake text equals the real one");
-    f.spoofs.push_back({at[0], at[1]});
+    f.spoofs.push_back(fakeAtReal(item, fields[1]));
+  } else if (kind == "misread") {
+    expectFields(item, fields, 3, "misread:FAKE@REAL:T0-T1");
+    SpoofedSign misread = fakeAtReal(item, fields[1]);
+    misread.during = timeRange(item, fields[2]);
+    f.spoofs.push_back(misread);
   } else if (kind == "kidnap") {
     if (fields.size() != 2 && fields.size() != 3) bad(item, "expected kidnap:TIME[:METRES]");
     Kidnap k;
@@ -118,7 +128,7 @@ void parseItem(const std::string& item, InputFaults& f) {
   } else {
     bad(item,
         "unknown kind (dark, freeze, missing, drop, corrupt, odo-dropout, yaw-bias, spoof, "
-        "kidnap, seed)");
+        "misread, kidnap, seed)");
   }
 }
 
@@ -177,7 +187,10 @@ std::string describeFaults(const InputFaults& f) {
   if (f.yaw_rate_bias != 0.0)
     lines.push_back(fmt::format("yaw rate biased by {} rad/s", f.yaw_rate_bias));
   for (const auto& s : f.spoofs)
-    lines.push_back(fmt::format("sign '{}' shows '{}' (spoofed)", s.real, s.fake));
+    lines.push_back(s.during ? fmt::format("text '{}' read as '{}' from {} s to {} s", s.real,
+                                           s.fake, fmtTime(s.during->begin),
+                                           fmtTime(s.during->end))
+                             : fmt::format("sign '{}' shows '{}' (spoofed)", s.real, s.fake));
   for (const auto& k : f.kidnaps)
     lines.push_back(fmt::format("kidnap at {} s over {} m", fmtTime(k.time), k.distance_m));
   std::string out;
@@ -249,16 +262,18 @@ std::vector<bool> kidnapSkips(const std::vector<Kidnap>& kidnaps,
 }
 
 std::vector<std::string> spoofInstances(const std::vector<SpoofedSign>& spoofs,
-                                        std::vector<ocr::TextInstance>& instances) {
+                                        std::vector<ocr::TextInstance>& instances, double time) {
   std::vector<std::string> notes;
   for (auto& instance : instances)
     for (const auto& s : spoofs)
       // A tracked text is not read, only fitted where REAL stands: the sign's content
       // cannot fool it (its place is REAL's place).
-      if (instance.read && instance.text == s.real) {
+      if (instance.read && instance.text == s.real && (!s.during || s.during->contains(time))) {
         instance.text = s.fake;
         instance.raw_text = s.fake;
-        notes.push_back(fmt::format("fault: spoofed sign: '{}' reads '{}'", s.real, s.fake));
+        notes.push_back(s.during
+                            ? fmt::format("fault: misread: '{}' read as '{}'", s.real, s.fake)
+                            : fmt::format("fault: spoofed sign: '{}' reads '{}'", s.real, s.fake));
         break;
       }
   return notes;
@@ -272,7 +287,7 @@ std::string SpoofingSpotter::name() const { return inner_->name() + "+spoof"; }
 std::vector<ocr::TextInstance> SpoofingSpotter::spot(const cv::Mat& image,
                                                      const ocr::SpotRequest& request) {
   auto instances = inner_->spot(image, request);
-  auto notes = spoofInstances(spoofs_, instances);
+  auto notes = spoofInstances(spoofs_, instances, time_);
   notes_.insert(notes_.end(), notes.begin(), notes.end());
   return instances;
 }
@@ -332,6 +347,7 @@ std::vector<std::string> FaultInjector::takeSpotterNotes() {
 void FaultInjector::apply(size_t index, localize::FrameInput& frame,
                           std::vector<std::string>& warnings) {
   const double t = frame.timestamp;
+  if (spoofing_) spoofing_->setTime(t);
 
   // Odometry: kidnap (withheld since the last processed frame set), dropouts, bias.
   if (withhold_next_odometry_) {
@@ -407,7 +423,7 @@ void FaultInjector::apply(size_t index, localize::FrameInput& frame,
                                      c.image.empty() ? "undecodable" : "decoded garbled"));
     }
     if (c.instances && !faults_.spoofs.empty()) {
-      auto notes = spoofInstances(faults_.spoofs, *c.instances);
+      auto notes = spoofInstances(faults_.spoofs, *c.instances, t);
       warnings.insert(warnings.end(), notes.begin(), notes.end());
     }
     kept.push_back(std::move(c));

@@ -14,6 +14,9 @@
 //   odo-dropout:T0-T1   no odometry samples from T0 to T1
 //   yaw-bias:B          B rad/s added to every odometry yaw rate
 //   spoof:FAKE@REAL     the sign REAL reads FAKE (a fake parking number at REAL's place)
+//   misread:FAKE@REAL:T0-T1
+//                       the spotter reads REAL as FAKE from T0 to T1 (a misreading, e.g. of
+//                       a worn or blurred number, that may give a wrong first fix)
 //   kidnap:T[:D]        at T the vehicle jumps D metres (default 20): frame sets are skipped
 //                       and their odometry withheld until the truth has moved D metres
 //   seed:N              seed of the random choices (drop, corrupt); default 7
@@ -47,6 +50,8 @@ struct CameraFault {
 struct SpoofedSign {
   std::string fake;  // what the sign shows
   std::string real;  // the sign it replaces
+  // A misreading: only while the sequence time lies in this range (a spoof: always).
+  std::optional<TimeRange> during;
 };
 
 struct Kidnap {
@@ -92,6 +97,8 @@ std::vector<bool> kidnapSkips(const std::vector<Kidnap>& kidnaps,
 class SpoofingSpotter : public ocr::TextSpotter {
  public:
   SpoofingSpotter(ocr::TextSpotter* inner, std::vector<SpoofedSign> spoofs);
+  // The sequence time of the frame set being spotted (SpoofedSign::during).
+  void setTime(double time) { time_ = time; }
   std::string name() const override;
   std::vector<ocr::TextInstance> spot(const cv::Mat& image,
                                       const ocr::SpotRequest& request) override;
@@ -102,11 +109,13 @@ class SpoofingSpotter : public ocr::TextSpotter {
   ocr::TextSpotter* inner_;
   std::vector<SpoofedSign> spoofs_;
   std::vector<std::string> notes_;
+  double time_ = 0.0;
 };
 
-// Replaces spoofed texts in place; returns one note per substitution.
+// Replaces spoofed (and, at `time`, misread) texts in place; returns one note per
+// substitution.
 std::vector<std::string> spoofInstances(const std::vector<SpoofedSign>& spoofs,
-                                        std::vector<ocr::TextInstance>& instances);
+                                        std::vector<ocr::TextInstance>& instances, double time);
 
 // A corrupt JPEG of `image`: encoded, truncated and with flipped bytes, then decoded the way
 // a frame from disk would be. The result may be empty (undecodable) or garbled.

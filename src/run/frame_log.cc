@@ -30,6 +30,7 @@ std::string frameResultToJson(const localize::FrameResult& r) {
   if (r.measurement_covariance) j["measurement_covariance"] = matrixJson(*r.measurement_covariance);
   j["solver"] = {{"converged", r.solver_converged}, {"iterations", r.solver_iterations}};
   j["reinitialised"] = r.reinitialised;
+  j["tentative"] = r.tentative;
   j["level"] = {{"name", r.level}, {"probability", r.level_probability}, {"decided", r.level_decided}};
   nlohmann::json cameras = nlohmann::json::array();
   for (const auto& c : r.cameras) {

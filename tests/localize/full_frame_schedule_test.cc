@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "localize/read_planning.h"
@@ -86,6 +87,24 @@ TEST(FullFrameScheduleTest, TheRoundRobinStartsAfreshWhenTheTrackBegins) {
   EXPECT_TRUE(schedule.next(kCameras, false, true).all);
   EXPECT_FALSE(schedule.next(kCameras, true, true).sweeping);
   EXPECT_TRUE(schedule.next(kCameras, true, true).sweeping);
+}
+
+
+TEST(FullFrameSchedule, ATentativeTrackSweepsOneCameraEveryFrameSet) {
+  ReadingOptions options;
+  options.full_frame_interval = 30;
+  options.tentative_full_frame_interval = 4;
+  FullFrameSchedule tentative(options, true), tracking(options, true);
+  int tentative_sweeps = 0, tracking_sweeps = 0;
+  for (int k = 0; k < 8; ++k) {
+    const FullFrameChoice t = tentative.next(4, true, true, true);
+    tentative_sweeps += static_cast<int>(std::count(t.full_frame.begin(), t.full_frame.end(), true));
+    EXPECT_TRUE(t.sweeping) << k;
+    const FullFrameChoice c = tracking.next(4, true, true, false);
+    tracking_sweeps += static_cast<int>(std::count(c.full_frame.begin(), c.full_frame.end(), true));
+  }
+  EXPECT_EQ(tentative_sweeps, 8);  // each of the four cameras twice, one a frame set
+  EXPECT_LE(tracking_sweeps, 2);
 }
 
 }  // namespace

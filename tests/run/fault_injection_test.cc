@@ -261,6 +261,27 @@ TEST(FaultInjection, SpoofingSpotterSubstitutesAndNotes) {
   EXPECT_EQ(plain.wrapSpotter(&inner), &inner);
 }
 
+TEST(FaultInjection, AMisreadingRenamesTheTextOnlyWithinItsTimeRange) {
+  FixedSpotter inner;
+  auto inj = injector("misread:B1-105@B1-112:0.2-0.35");
+  ocr::TextSpotter* spotter = inj.wrapSpotter(&inner);
+  std::vector<std::string> warnings;
+  for (int k = 0; k < 6; ++k) {
+    auto f = frame(0.1 * k);
+    inj.apply(static_cast<size_t>(k), f, warnings);
+    const bool during = k == 2 || k == 3;
+    EXPECT_EQ(f.cameras[0].instances->at(0).text, during ? "B1-105" : "B1-112") << k;
+    EXPECT_EQ(spotter->spot(cv::Mat(4, 4, CV_8UC3), {})[0].text, during ? "B1-105" : "B1-112")
+        << k;
+  }
+  EXPECT_TRUE(hasWarning(warnings, "misread"));
+  EXPECT_EQ(inj.takeSpotterNotes().size(), 2u);
+  EXPECT_NE(describeFaults(inj.faults()).find("read as 'B1-105' from 0.20 s to 0.35 s"),
+            std::string::npos);
+  EXPECT_THROW(parseFaults("misread:B1-105@B1-112"), InputError);
+  EXPECT_THROW(parseFaults("misread:B1-112@B1-112:1-2"), InputError);
+}
+
 TEST(FaultInjection, KidnapSkipsUntilTheTruthHasMovedAndWithholdsOdometry) {
   // Straight at 2 m/s, a frame set every 0.5 s: 20 m take 10 s = 20 frame sets.
   std::vector<double> timestamps;

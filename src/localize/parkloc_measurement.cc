@@ -46,10 +46,25 @@ Eigen::Matrix3d fixCovariance(const SolverResult& fix, double pixel_sigma,
   return R;
 }
 
+Eigen::Matrix3d fixPixelCovariance(const SolverResult& fix, double pixel_sigma,
+                                   const MeasurementOptions& options) {
+  const double fit = pixel_sigma > 0.0 ? fix.rms_px / pixel_sigma : 0.0;
+  Eigen::Matrix3d R =
+      options.fix_covariance_inflation * std::max(1.0, fit * fit) * fix.pixel_covariance;
+  const double yaw_floor = 0.05 * M_PI / 180.0;
+  R.diagonal() += Eigen::Vector3d(1e-4, 1e-4, yaw_floor * yaw_floor);  // 1e-4 m^2: (1 cm)^2
+  return R;
+}
+
 PoseFix ParklocMeasurement::toFix(const SolverResult& solve,
                                   const std::vector<LandmarkObservation>& obs) const {
-  return {solve.pose, fixCovariance(solve, solver_.pixel_sigma, options_), solve.map_covariance,
-          landmarkIds(obs, solve), options_.map_covariance_floor * solve.map_covariance};
+  return {solve.pose,
+          fixCovariance(solve, solver_.pixel_sigma, options_),
+          solve.map_covariance,
+          landmarkIds(obs, solve),
+          options_.map_covariance_floor * solve.map_covariance,
+          solve.map_terms,
+          fixPixelCovariance(solve, solver_.pixel_sigma, options_)};
 }
 
 FrameFixes ParklocMeasurement::whileTracking(const std::vector<LandmarkObservation>& accepted,
@@ -65,7 +80,7 @@ FrameFixes ParklocMeasurement::whileTracking(const std::vector<LandmarkObservati
       const PoseFix fix = toFix(s, accepted);
       result.measurement = fix.pose;
       result.measurement_covariance = fix.covariance;
-      if (ekf.mahalanobis2(fix.pose, fix.covariance) <= tracking_.fix_gate_chi2) {
+      if (fixDistance2(ekf, fix) <= tracking_.fix_gate_chi2) {
         fixes.agreeing = fix;
       } else {
         fixes.disagreeing = fix;
@@ -84,7 +99,7 @@ FrameFixes ParklocMeasurement::whileTracking(const std::vector<LandmarkObservati
     PoseFix fix;
     fix.pose = s.pose;
     if (s.ok) fix = toFix(s, all);
-    if (s.ok && ekf.mahalanobis2(fix.pose, fix.covariance) > tracking_.fix_gate_chi2) {
+    if (s.ok && fixDistance2(ekf, fix) > tracking_.fix_gate_chi2) {
       fixes.disagreeing = fix;
       fixes.disagreeing_landmarks = landmarksIn(all, s);
       if (!result.measurement) {

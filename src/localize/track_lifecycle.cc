@@ -15,6 +15,12 @@ double positionSigma(const Eigen::Matrix3d& covariance) {
                         .maxCoeff()));
 }
 
+double fixDistance2(const PoseEkf& ekf, const PoseFix& fix) {
+  if (ekf.mapErrorStates() && !fix.map_terms.empty())
+    return ekf.mahalanobis2(fix.pose, fix.pixel_part, fix.map_terms);
+  return ekf.mahalanobis2(fix.pose, fix.covariance);
+}
+
 bool isTracking(const PoseEkf& ekf, const TrackingOptions& options) {
   return ekf.initialised() && positionSigma(ekf.covariance()) <= options.lost_position_sigma_m;
 }
@@ -37,7 +43,10 @@ void TrackLifecycle::apply(const FrameFixes& fixes, bool was_tracking, PoseEkf& 
                            MotionPrediction& motion, FrameResult& result) {
   if (fixes.agreeing) {
     const PoseFix& fix = *fixes.agreeing;
-    if (was_tracking) {
+    const bool map_states = ekf.mapErrorStates() && !fix.map_terms.empty();
+    if (was_tracking && map_states) {
+      ekf.update(fix.pose, fix.pixel_part, fix.map_terms);
+    } else if (was_tracking) {
       double uses = 0.0;
       for (const std::string& id : fix.landmarks) uses += std::min(fused_[id], options_.map_reuse_cap - 1);
       const double n = 1.0 + (fix.landmarks.empty() ? 0.0 : uses / fix.landmarks.size());
@@ -45,11 +54,15 @@ void TrackLifecycle::apply(const FrameFixes& fixes, bool was_tracking, PoseEkf& 
     } else {
       fused_.clear();
       // First fix, or re-localisation after the filter got lost.
-      ekf.initialise(fixes.agreeing->pose, fixes.agreeing->covariance, result.timestamp);
+      if (map_states)
+        ekf.initialise(fix.pose, fix.pixel_part, fix.map_terms, result.timestamp);
+      else
+        ekf.initialise(fix.pose, fix.covariance, result.timestamp);
       result.reinitialised = true;
       motion.forgetFixes();
     }
     for (const std::string& id : fix.landmarks) ++fused_[id];
+    result.fused_fixes.push_back({fix.pose, fix.pixel_part, fix.map_terms});
     motion.noteFix(result.timestamp, ekf);
     disagreeing_fixes_ = 0;
     disagreeing_with_consensus_ = false;
@@ -76,7 +89,11 @@ void TrackLifecycle::apply(const FrameFixes& fixes, bool was_tracking, PoseEkf& 
   predicted_at_last_disagreeing_fix_ = ekf.pose();
   const int needed = std::max(1, options_.reinit_after_rejected_fixes);
   if (disagreeing_fixes_ >= (disagreeing_with_consensus_ ? needed : 2 * needed)) {
-    ekf.initialise(fix, fixes.disagreeing->covariance, result.timestamp);
+    const PoseFix& d = *fixes.disagreeing;
+    if (ekf.mapErrorStates() && !d.map_terms.empty())
+      ekf.initialise(fix, d.pixel_part, d.map_terms, result.timestamp);
+    else
+      ekf.initialise(fix, d.covariance, result.timestamp);
     fused_.clear();
     result.reinitialised = true;
     result.status = TrackingStatus::kOk;

@@ -28,6 +28,9 @@ void describe(OptionVisitor& v, localize::EkfOptions& o) {
           "position random walk without odometry, m/sqrt(s)");
   v.value("no_odometry_yaw_sigma", o.no_odometry_yaw_sigma,
           "yaw random walk without odometry, rad/sqrt(s)");
+  v.value("map_error_landmarks", o.map_error_landmarks,
+          "landmarks whose map error (a survey error every fix of them repeats) are filter "
+          "states; 0: none, the map_reuse_cap and map_covariance_floor rules instead");
 }
 
 void describe(OptionVisitor& v, localize::ReadingOptions& o) {

@@ -95,7 +95,9 @@ EvaluationReport assembleReport(const EvaluationOptions& options, const Evaluati
       if (t.spec.key != totals.main_key && t.spec.key.rfind(totals.main_key + "_map_noise_", 0))
         continue;
       perturbed = perturbed || t.spec.map_noise_m > 0.0;
-      rows.push_back({t.spec.map_noise_m, toResult(t), t.nees_frames, t.nees_inside});
+      MapNoiseRow row{t.spec.map_noise_m, toResult(t), t.nees_frames, t.nees_inside, {}};
+      if (!t.smoothed_frames.empty()) row.smoothed = errorFromFrames(t.smoothed_frames);
+      rows.push_back(std::move(row));
     }
     if (perturbed) report.tables.push_back(mapNoiseTable(rows));
   }

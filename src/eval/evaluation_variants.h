@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "eval/dead_reckoning.h"
+#include "eval/drive_smoother.h"
 #include "eval/evaluation.h"
 #include "eval/latency.h"
 #include "eval/level_metrics.h"
@@ -47,6 +48,9 @@ struct VariantTally {
   // NEES lies inside the 95 % chi-square bound (eval/consistency.h).
   size_t nees_frames = 0, nees_inside = 0;
   size_t views = 0;  // drives drawn in the report
+  // The drive smoothed from the fixes this configuration fused (eval/drive_smoother.h), at its
+  // frames with a pose: what a non-causal estimator makes of the same fixes and odometry.
+  std::vector<FrameError> smoothed_frames;
 };
 
 // One variant's state within a sequence.
@@ -59,6 +63,7 @@ struct VariantRun {
   std::set<std::string> levels;  // levels of the landmarks it used (for the map plot)
   std::vector<LevelFrame> level_frames;
   bool fixed = false;
+  std::vector<SmootherFrame> smoother_frames;  // frames with a pose, for the drive smoother
 };
 
 // The configurations the options ask for, in the report's order: parkloc, the paper's

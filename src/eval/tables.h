@@ -78,6 +78,8 @@ struct MapNoiseRow {
   double noise_m = 0.0;
   VariantResult result;
   size_t nees_frames = 0, nees_inside = 0;
+  // The drives smoothed from the same fixes and odometry (eval/drive_smoother.h).
+  std::optional<TrajectoryError> smoothed;
 };
 Table mapNoiseTable(const std::vector<MapNoiseRow>& rows);
 

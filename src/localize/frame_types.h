@@ -11,6 +11,7 @@
 
 #include "common/odometry_sample.h"
 #include "geometry/pose.h"
+#include "localize/map_error_term.h"
 #include "ocr/text_spotter.h"
 
 namespace parkloc::localize {
@@ -118,6 +119,15 @@ struct BackgroundFusion {
   double worker_cpu_ms = 0.0;  // ... and its CPU time
 };
 
+// A pose fix the filter fused, as its map-error model sees it: z = pose + sum J_fix_map e +
+// v, v ~ N(0, pixel_covariance), e each landmark's map error (map_error_term.h). Evaluation
+// smooths a whole drive from these and the odometry (eval/drive_smoother.h).
+struct FusedFix {
+  geometry::Pose2 pose;
+  Eigen::Matrix3d pixel_covariance = Eigen::Matrix3d::Zero();
+  std::vector<MapErrorTerm> map_terms;
+};
+
 struct FrameResult {
   double timestamp = 0.0;
   TrackingStatus status = TrackingStatus::kNotInitialised;
@@ -135,6 +145,7 @@ struct FrameResult {
   // The pose rests on a single landmark's reading, not yet confirmed by a second one read
   // consistently with it (track_lifecycle.h): it may come from one misreading.
   bool tentative = false;
+  std::vector<FusedFix> fused_fixes;  // fixes that updated or started the filter
   // The level driven on (level_estimate.h): the most probable one, its probability, and
   // whether it is decided. An undecided level with a pose: the levels share the places seen.
   std::string level;

@@ -20,6 +20,8 @@ PoseFix carryFix(const PoseFix& fix, const geometry::Pose2& motion) {
   now.covariance = J * fix.covariance * J.transpose();
   now.map_part = J * fix.map_part * J.transpose();
   now.floor = J * fix.floor * J.transpose();
+  now.pixel_part = J * fix.pixel_part * J.transpose();
+  for (MapErrorTerm& t : now.map_terms) t.J_fix_map = (J * t.J_fix_map).eval();
   return now;
 }
 

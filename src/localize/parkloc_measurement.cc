@@ -51,6 +51,16 @@ Eigen::Matrix3d fixCovariance(const SolverResult& fix, double pixel_sigma,
   return R;
 }
 
+Eigen::Matrix3d fixPixelCovariance(const SolverResult& fix, double pixel_sigma,
+                                   const MeasurementOptions& options) {
+  const double fit = pixel_sigma > 0.0 ? fix.rms_px / pixel_sigma : 0.0;
+  Eigen::Matrix3d R =
+      options.fix_covariance_inflation * std::max(1.0, fit * fit) * fix.pixel_covariance;
+  const double yaw_floor = 0.05 * M_PI / 180.0;
+  R.diagonal() += Eigen::Vector3d(1e-4, 1e-4, yaw_floor * yaw_floor);  // 1e-4 m^2: (1 cm)^2
+  return R;
+}
+
 PoseFix ParklocMeasurement::toFix(const SolverResult& solve,
                                   const std::vector<LandmarkObservation>& obs) const {
   PoseFix fix;
@@ -60,6 +70,8 @@ PoseFix ParklocMeasurement::toFix(const SolverResult& solve,
   fix.landmarks = landmarkIds(obs, solve);
   fix.read_landmarks = landmarkIds(obs, solve.inlier, true);
   fix.floor = options_.map_covariance_floor * solve.map_covariance;
+  fix.map_terms = solve.map_terms;
+  fix.pixel_part = fixPixelCovariance(solve, solver_.pixel_sigma, options_);
   return fix;
 }
 
@@ -77,7 +89,7 @@ FrameFixes ParklocMeasurement::whileTracking(const std::vector<LandmarkObservati
       const PoseFix fix = toFix(s, accepted);
       result.measurement = fix.pose;
       result.measurement_covariance = fix.covariance;
-      if (ekf.mahalanobis2(fix.pose, fix.covariance) <= tracking_.fix_gate_chi2) {
+      if (fixDistance2(ekf, fix) <= tracking_.fix_gate_chi2) {
         fixes.agreeing = fix;
       } else {
         fixes.disagreeing = fix;
@@ -107,7 +119,7 @@ FrameFixes ParklocMeasurement::whileTracking(const std::vector<LandmarkObservati
         // Certain enough to start a filter with (first_fix_max_sigma_m) and outside the gate.
         const bool certain = tracking_.first_fix_max_sigma_m <= 0.0 ||
                              positionSigma(fix.covariance) <= tracking_.first_fix_max_sigma_m;
-        if (certain && ekf.mahalanobis2(fix.pose, fix.covariance) > tracking_.fix_gate_chi2) {
+        if (certain && fixDistance2(ekf, fix) > tracking_.fix_gate_chi2) {
           fixes.disagreeing = fix;
           fixes.disagreeing_landmarks = landmarksIn(reads, s);
           result.warnings.push_back("tentative track: the texts read place the vehicle elsewhere");
@@ -127,7 +139,7 @@ FrameFixes ParklocMeasurement::whileTracking(const std::vector<LandmarkObservati
     PoseFix fix;
     fix.pose = s.pose;
     if (s.ok) fix = toFix(s, all);
-    if (s.ok && ekf.mahalanobis2(fix.pose, fix.covariance) > tracking_.fix_gate_chi2) {
+    if (s.ok && fixDistance2(ekf, fix) > tracking_.fix_gate_chi2) {
       fixes.disagreeing = fix;
       fixes.disagreeing_landmarks = landmarksIn(all, s);
       if (!result.measurement) {

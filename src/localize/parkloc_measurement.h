@@ -44,6 +44,12 @@ struct MeasurementOptions {
 Eigen::Matrix3d fixCovariance(const SolverResult& fix, double pixel_sigma,
                               const MeasurementOptions& options);
 
+// The same for a filter that keeps the map errors as states: the solve's pixel-noise part
+// (SolverResult::pixel_covariance), inflated as above, with the same floor; the map's part
+// enters through SolverResult::map_terms.
+Eigen::Matrix3d fixPixelCovariance(const SolverResult& fix, double pixel_sigma,
+                                   const MeasurementOptions& options);
+
 class ParklocMeasurement {
  public:
   // The rig must outlive the measurement.

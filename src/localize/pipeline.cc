@@ -330,6 +330,7 @@ struct Pipeline::Impl {
     result.timings.filter_ms += filter_time.elapsedMs();
     if (late.status == TrackingStatus::kOk) result.status = TrackingStatus::kOk;
     result.reinitialised = result.reinitialised || late.reinitialised;
+    for (auto& f : late.fused_fixes) result.fused_fixes.push_back(std::move(f));
     for (auto& w : late.warnings) result.warnings.push_back(std::move(w));
 
     BackgroundFusion fused;

@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -26,6 +27,7 @@ void PoseEkf::reset() {
   covariance_.setZero();
   covariance_(kBias, kBias) = options_.yaw_rate_bias_sigma * options_.yaw_rate_bias_sigma;
   covariance_(kScale, kScale) = options_.speed_scale_sigma * options_.speed_scale_sigma;
+  clearMapErrors();
 }
 
 void PoseEkf::initialise(const geometry::Pose2& pose, const Eigen::Matrix3d& covariance,
@@ -37,45 +39,58 @@ void PoseEkf::initialise(const geometry::Pose2& pose, const Eigen::Matrix3d& cov
   covariance_.bottomRightCorner<2, 2>() = odometry;
   time_ = time;
   initialised_ = true;
+  clearMapErrors();
 }
 
-void PoseEkf::predictWithOdometry(double speed, double yaw_rate, double dt) {
-  if (!(dt > 0.0)) return;
-  const double yaw0 = pose_.yaw;
-  const double dyaw = (yaw_rate - bias_) * dt;
+OdometryArc odometryArc(double yaw, double speed, double yaw_rate, double bias, double scale,
+                        double dt) {
+  const double dyaw = (yaw_rate - bias) * dt;
   // Arc of the unicycle; its chord for small turns (sin(x)/x -> 1).
   const double half = 0.5 * dyaw;
   const double chord = std::abs(half) < 1e-9 ? 1.0 : std::sin(half) / half;
   const double measured_distance = speed * dt * chord;
-  const double distance = scale_ * measured_distance;
-  const double heading = yaw0 + half;
-  pose_ = geometry::Pose2(pose_.x + distance * std::cos(heading),
-                          pose_.y + distance * std::sin(heading), yaw0 + dyaw);
-
-  // Jacobians of the motion w.r.t. the state and the inputs. The turn changes both the
-  // heading of the chord (half of it) and its length (d chord / d half); the bias enters like
-  // the yaw rate with the opposite sign, the scale like the speed.
+  const double distance = scale * measured_distance;
+  const double heading = yaw + half;
   const double c = std::cos(heading), s = std::sin(heading);
+  OdometryArc arc;
+  arc.delta = Eigen::Vector3d(distance * c, distance * s, dyaw);
+
+  // The turn changes both the heading of the chord (half of it) and its length (d chord /
+  // d half); the bias enters like the yaw rate with the opposite sign, the scale like the speed.
   const double chord_slope = std::abs(half) < 1e-4
                                  ? -half / 3.0
                                  : (half * std::cos(half) - std::sin(half)) / (half * half);
-  const Eigen::Vector2d d_position_d_half(scale_ * speed * dt * chord_slope * c - distance * s,
-                                          scale_ * speed * dt * chord_slope * s + distance * c);
+  const Eigen::Vector2d d_position_d_half(scale * speed * dt * chord_slope * c - distance * s,
+                                          scale * speed * dt * chord_slope * s + distance * c);
+  arc.J_state.setZero();
+  arc.J_state.leftCols<3>().setIdentity();
+  arc.J_state(0, 2) = -distance * s;
+  arc.J_state(1, 2) = distance * c;
+  arc.J_state.block<2, 1>(0, kBias) = -0.5 * dt * d_position_d_half;
+  arc.J_state(2, kBias) = -dt;
+  arc.J_state(0, kScale) = measured_distance * c;
+  arc.J_state(1, kScale) = measured_distance * s;
+  arc.J_input.setZero();
+  arc.J_input(0, 0) = scale * dt * chord * c;
+  arc.J_input(1, 0) = scale * dt * chord * s;
+  arc.J_input.block<2, 1>(0, 1) = 0.5 * dt * d_position_d_half;
+  arc.J_input(2, 1) = dt;
+  return arc;
+}
+
+void PoseEkf::predictWithOdometry(double speed, double yaw_rate, double dt) {
+  if (!(dt > 0.0)) return;
+  const OdometryArc arc = odometryArc(pose_.yaw, speed, yaw_rate, bias_, scale_, dt);
+  pose_ = geometry::Pose2(pose_.x + arc.delta(0), pose_.y + arc.delta(1), pose_.yaw + arc.delta(2));
   StateMatrix F = StateMatrix::Identity();
-  F(0, 2) = -distance * s;
-  F(1, 2) = distance * c;
-  F.block<2, 1>(0, kBias) = -0.5 * dt * d_position_d_half;
-  F(2, kBias) = -dt;
-  F(0, kScale) = measured_distance * c;
-  F(1, kScale) = measured_distance * s;
+  F.topRows<3>() = arc.J_state;
   Eigen::Matrix<double, kStateSize, 2> G = Eigen::Matrix<double, kStateSize, 2>::Zero();
-  G(0, 0) = scale_ * dt * chord * c;
-  G(1, 0) = scale_ * dt * chord * s;
-  G.block<2, 1>(0, 1) = 0.5 * dt * d_position_d_half;
-  G(2, 1) = dt;
+  G.topRows<3>() = arc.J_input;
   const Eigen::Vector2d input_variance(options_.speed_sigma * options_.speed_sigma,
                                        options_.yaw_rate_sigma * options_.yaw_rate_sigma);
   covariance_ = F * covariance_ * F.transpose() + G * input_variance.asDiagonal() * G.transpose();
+  // The map errors stay where they are; their correlation with the state moves with it.
+  if (cross_.cols() > 0) cross_ = (F * cross_).eval();
   covariance_(kBias, kBias) += options_.yaw_rate_bias_walk * options_.yaw_rate_bias_walk * dt;
   covariance_(kScale, kScale) += options_.speed_scale_walk * options_.speed_scale_walk * dt;
 }
@@ -94,6 +109,12 @@ double PoseEkf::mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& 
 }
 
 void PoseEkf::update(const geometry::Pose2& fix, const Eigen::Matrix3d& R) {
+  if (!map_ids_.empty()) {
+    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, kStateSize + map_error_.size());
+    H.leftCols<3>().setIdentity();
+    updateFull(innovation(fix, pose_), H, R);
+    return;
+  }
   // H = [I 0]: P H^T is the first three columns of P, H P H^T its top-left block.
   const Eigen::Vector3d nu = innovation(fix, pose_);
   const Eigen::Matrix3d S = covariance() + R;
@@ -160,6 +181,155 @@ void PoseEkf::floorPoseCovariance(const Eigen::Matrix3d& floor) {
   const Eigen::Matrix3d raised = recompose(*g, g->lambda.cwiseMax(1.0));
   covariance_.topLeftCorner<3, 3>() += raised - P;
   covariance_ = 0.5 * (covariance_ + covariance_.transpose()).eval();
+}
+
+void PoseEkf::clearMapErrors() {
+  map_ids_.clear();
+  last_seen_.clear();
+  map_error_.resize(0);
+  cross_.resize(kStateSize, 0);
+  map_covariance_.resize(0, 0);
+}
+
+void PoseEkf::removeMapState(size_t i) {
+  // Dropping a state's rows and columns marginalises it: what it told the pose stays there.
+  const Eigen::Index n = map_error_.size(), at = 5 * static_cast<Eigen::Index>(i);
+  const Eigen::Index tail = n - at - 5;
+  map_error_.segment(at, tail) = map_error_.tail(tail).eval();
+  map_error_.conservativeResize(n - 5);
+  cross_.middleCols(at, tail) = cross_.rightCols(tail).eval();
+  cross_.conservativeResize(Eigen::NoChange, n - 5);
+  map_covariance_.middleCols(at, tail) = map_covariance_.rightCols(tail).eval();
+  map_covariance_.middleRows(at, tail) = map_covariance_.bottomRows(tail).eval();
+  map_covariance_.conservativeResize(n - 5, n - 5);
+  map_ids_.erase(map_ids_.begin() + static_cast<std::ptrdiff_t>(i));
+  last_seen_.erase(last_seen_.begin() + static_cast<std::ptrdiff_t>(i));
+}
+
+std::vector<int> PoseEkf::mapStates(const std::vector<MapErrorTerm>& map_terms) {
+  ++updates_;
+  std::vector<int> index(map_terms.size(), -1);
+  for (size_t t = 0; t < map_terms.size(); ++t) {
+    const auto it = std::find(map_ids_.begin(), map_ids_.end(), map_terms[t].landmark_id);
+    if (it != map_ids_.end()) {
+      last_seen_[static_cast<size_t>(it - map_ids_.begin())] = updates_;
+      continue;
+    }
+    // A new state: mean 0, the map's variances, uncorrelated with the rest.
+    const Eigen::Index n = map_error_.size();
+    map_error_.conservativeResize(n + 5);
+    map_error_.tail<5>().setZero();
+    cross_.conservativeResize(Eigen::NoChange, n + 5);
+    cross_.rightCols<5>().setZero();
+    map_covariance_.conservativeResize(n + 5, n + 5);
+    map_covariance_.rightCols<5>().setZero();
+    map_covariance_.bottomRows<5>().setZero();
+    map_covariance_.bottomRightCorner<5, 5>() = map_terms[t].variance.asDiagonal();
+    map_ids_.push_back(map_terms[t].landmark_id);
+    last_seen_.push_back(updates_);
+  }
+  // Beyond the limit the landmark observed longest ago leaves (never one of this fix).
+  const size_t limit = static_cast<size_t>(std::max(options_.map_error_landmarks, 0));
+  while (map_ids_.size() > std::max(limit, map_terms.size())) {
+    size_t oldest = 0;
+    for (size_t i = 1; i < map_ids_.size(); ++i)
+      if (last_seen_[i] < last_seen_[oldest]) oldest = i;
+    removeMapState(oldest);
+  }
+  for (size_t t = 0; t < map_terms.size(); ++t)
+    index[t] = static_cast<int>(
+        std::find(map_ids_.begin(), map_ids_.end(), map_terms[t].landmark_id) - map_ids_.begin());
+  return index;
+}
+
+Eigen::MatrixXd PoseEkf::assembled() const {
+  const Eigen::Index n = kStateSize + map_error_.size();
+  Eigen::MatrixXd P(n, n);
+  P.topLeftCorner<kStateSize, kStateSize>() = covariance_;
+  P.topRightCorner(kStateSize, map_error_.size()) = cross_;
+  P.bottomLeftCorner(map_error_.size(), kStateSize) = cross_.transpose();
+  P.bottomRightCorner(map_error_.size(), map_error_.size()) = map_covariance_;
+  return P;
+}
+
+void PoseEkf::split(const Eigen::MatrixXd& P) {
+  const Eigen::Index m = map_error_.size();
+  covariance_ = P.topLeftCorner<kStateSize, kStateSize>();
+  cross_ = P.topRightCorner(kStateSize, m);
+  map_covariance_ = P.bottomRightCorner(m, m);
+}
+
+void PoseEkf::updateFull(const Eigen::Vector3d& nu, const Eigen::MatrixXd& H,
+                         const Eigen::Matrix3d& R) {
+  const Eigen::MatrixXd P = assembled();
+  const Eigen::MatrixXd PHt = P * H.transpose();
+  const Eigen::Matrix3d S = H * PHt + R;
+  const Eigen::MatrixXd K = PHt * S.inverse();
+  const Eigen::VectorXd dx = K * nu;
+  pose_ = geometry::Pose2(pose_.x + dx(0), pose_.y + dx(1), pose_.yaw + dx(2));
+  bias_ += dx(kBias);
+  scale_ += dx(kScale);
+  map_error_ += dx.tail(map_error_.size());
+  // P - K S K^T: O(n^2) where the Joseph form costs O(n^3) in the map states; symmetrised.
+  const Eigen::MatrixXd updated = P - K * S * K.transpose();
+  split(0.5 * (updated + updated.transpose()));
+}
+
+void PoseEkf::initialise(const geometry::Pose2& pose, const Eigen::Matrix3d& R_pixel,
+                         const std::vector<MapErrorTerm>& map_terms, double time) {
+  Eigen::Matrix3d covariance = R_pixel;
+  for (const MapErrorTerm& t : map_terms)
+    covariance += t.J_fix_map * t.variance.asDiagonal() * t.J_fix_map.transpose();
+  initialise(pose, covariance, time);
+  if (!mapErrorStates() || map_terms.empty()) return;
+  // pose - z = -sum J e - v: the pose's error is correlated with each landmark's by -J Sigma.
+  const std::vector<int> index = mapStates(map_terms);
+  for (size_t t = 0; t < map_terms.size(); ++t)
+    if (index[t] >= 0)
+      cross_.block<3, 5>(0, 5 * index[t]) =
+          -map_terms[t].J_fix_map * map_terms[t].variance.asDiagonal();
+}
+
+double PoseEkf::mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& R_pixel,
+                             const std::vector<MapErrorTerm>& map_terms) const {
+  Eigen::Vector3d nu = innovation(fix, pose_);
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, kStateSize + map_error_.size());
+  H.leftCols<3>().setIdentity();
+  Eigen::Matrix3d S = R_pixel;
+  for (const MapErrorTerm& t : map_terms) {
+    const auto it = std::find(map_ids_.begin(), map_ids_.end(), t.landmark_id);
+    if (it == map_ids_.end() || !mapErrorStates()) {
+      S += t.J_fix_map * t.variance.asDiagonal() * t.J_fix_map.transpose();
+      continue;
+    }
+    const Eigen::Index at = 5 * (it - map_ids_.begin());
+    H.middleCols<5>(kStateSize + at) += t.J_fix_map;
+    nu -= t.J_fix_map * map_error_.segment<5>(at);
+  }
+  nu(2) = geometry::wrapAngle(nu(2));
+  S += H * assembled() * H.transpose();
+  return nu.dot(S.ldlt().solve(nu));
+}
+
+void PoseEkf::update(const geometry::Pose2& fix, const Eigen::Matrix3d& R_pixel,
+                     const std::vector<MapErrorTerm>& map_terms) {
+  if (!mapErrorStates()) {
+    Eigen::Matrix3d R = R_pixel;
+    for (const MapErrorTerm& t : map_terms)
+      R += t.J_fix_map * t.variance.asDiagonal() * t.J_fix_map.transpose();
+    update(fix, R);
+    return;
+  }
+  const std::vector<int> index = mapStates(map_terms);
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, kStateSize + map_error_.size());
+  H.leftCols<3>().setIdentity();
+  Eigen::Vector3d nu = innovation(fix, pose_);
+  for (size_t t = 0; t < map_terms.size(); ++t) {
+    H.middleCols<5>(kStateSize + 5 * index[t]) += map_terms[t].J_fix_map;
+    nu -= map_terms[t].J_fix_map * map_error_.segment<5>(5 * index[t]);
+  }
+  nu(2) = geometry::wrapAngle(nu(2));
+  updateFull(nu, H, R_pixel);
 }
 
 }  // namespace parkloc::localize

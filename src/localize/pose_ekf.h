@@ -13,8 +13,11 @@
 // distance they correct.
 #include <Eigen/Core>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "geometry/pose.h"
+#include "localize/map_error_term.h"
 
 namespace parkloc::localize {
 
@@ -30,7 +33,26 @@ struct EkfOptions {
   // Random walk when no odometry drives the prediction.
   double no_odometry_position_sigma = 0.5;  // m / sqrt(s)
   double no_odometry_yaw_sigma = 0.1;       // rad / sqrt(s)
+  // The map errors (x, y, heading, log width, log height) of up to this many landmarks are
+  // states beside the pose (map_error_term.h): a landmark's error is one unknown that every
+  // fix of it repeats, and odometry ties the fixes of different landmarks together, so the
+  // filter averages independent landmarks' errors over the drive but never one landmark's
+  // error over the frames that see it. The landmark observed longest ago leaves first (its
+  // information stays in the pose, marginalised). 0: no such states; the tracking's
+  // map_reuse_cap and the measurement's map_covariance_floor stand in for them.
+  int map_error_landmarks = 0;
 };
+
+// One piece of odometry held for dt as the filter integrates it: the exact unicycle arc from
+// heading `yaw`, moving at scale * speed and turning at yaw_rate - bias, with its Jacobians.
+struct OdometryArc {
+  Eigen::Vector3d delta = Eigen::Vector3d::Zero();  // x, y (map axes) and yaw change
+  // d (x, y, yaw after) / d (x, y, yaw, yaw-rate bias, speed scale) and / d (speed, yaw rate).
+  Eigen::Matrix<double, 3, 5> J_state = Eigen::Matrix<double, 3, 5>::Zero();
+  Eigen::Matrix<double, 3, 2> J_input = Eigen::Matrix<double, 3, 2>::Zero();
+};
+OdometryArc odometryArc(double yaw, double speed, double yaw_rate, double bias, double scale,
+                        double dt);
 
 // The largest covariance below both A and B in the positive semi-definite order along the
 // generalised eigenvectors of (B, A): with A = L L^T and L^-1 B L^-T = V Lambda V^T,
@@ -77,6 +99,26 @@ class PoseEkf {
   void update(const geometry::Pose2& fix, const Eigen::Matrix3d& R,
               const Eigen::Matrix3d& map_part);
 
+  // The map error states (EkfOptions::map_error_landmarks > 0).
+  bool mapErrorStates() const { return options_.map_error_landmarks > 0; }
+  // Starts the filter from a fix z = pose + sum J_fix_map e + v with pixel noise v ~ N(0,
+  // R_pixel): the pose z with covariance R_pixel + sum J Sigma_e J^T, correlated with the map
+  // errors of its landmarks, which become states (the fix has told nothing about them yet).
+  void initialise(const geometry::Pose2& pose, const Eigen::Matrix3d& R_pixel,
+                  const std::vector<MapErrorTerm>& map_terms, double time);
+  // Squared Mahalanobis distance of such a fix from the prediction (the map errors of its
+  // landmarks from their states, or from the map's sigmas when they are no state).
+  double mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& R_pixel,
+                      const std::vector<MapErrorTerm>& map_terms) const;
+  // Update with such a fix: H = [I 0 J_fix_map...], the landmarks' map errors added as
+  // states (mean 0, the map's variances) when they are not yet.
+  void update(const geometry::Pose2& fix, const Eigen::Matrix3d& R_pixel,
+              const std::vector<MapErrorTerm>& map_terms);
+  // The landmarks whose map errors are states, and the estimate of each (x, y, heading, log
+  // width, log height).
+  const std::vector<std::string>& mapErrorLandmarks() const { return map_ids_; }
+  Eigen::Matrix<double, 5, 1> mapError(size_t i) const { return map_error_.segment<5>(5 * i); }
+
   const geometry::Pose2& pose() const { return pose_; }
   // Marginal covariance of (x, y, yaw).
   Eigen::Matrix3d covariance() const { return covariance_.topLeftCorner<3, 3>(); }
@@ -98,6 +140,25 @@ class PoseEkf {
   double scale_ = 1.0;
   StateMatrix covariance_ = StateMatrix::Identity();
   double time_ = 0.0;
+  // Map error states: 5 per landmark in map_ids_, their cross-covariance with the core state
+  // (5 x 5m) and their covariance (5m x 5m); last_seen_ counts updates, for eviction.
+  std::vector<std::string> map_ids_;
+  std::vector<long> last_seen_;
+  long updates_ = 0;
+  Eigen::VectorXd map_error_;
+  Eigen::MatrixXd cross_;
+  Eigen::MatrixXd map_covariance_;
+
+  void clearMapErrors();
+  // The state index of each term's landmark, adding it (and evicting the oldest beyond the
+  // limit, never one of this fix's) when it is not a state.
+  std::vector<int> mapStates(const std::vector<MapErrorTerm>& map_terms);
+  void removeMapState(size_t i);
+  // The full covariance (core, then the map errors) and back.
+  Eigen::MatrixXd assembled() const;
+  void split(const Eigen::MatrixXd& P);
+  // The general update: innovation nu, H over the full state, noise R.
+  void updateFull(const Eigen::Vector3d& nu, const Eigen::MatrixXd& H, const Eigen::Matrix3d& R);
 };
 
 }  // namespace parkloc::localize

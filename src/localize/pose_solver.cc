@@ -260,6 +260,61 @@ NormalEquations accumulate(const geometry::Rig& rig, const std::vector<LandmarkO
   return n;
 }
 
+// The solve's sensitivity to each landmark's map error and its pixel-noise covariance, from
+// its linearisation at the pose it ended at: the Gauss-Newton step is -H^-1 sum_g B_g L_g^-1 r_g
+// with B_g = (L_g^-1 J_g)^T D_g (D_g the Huber weights of the whitened corners), and a landmark
+// whose map entry is off by e shifts its raw residuals by G_g e, pixel noise by n ~ N(0,
+// pixel_sigma^2 I). So the pose moves by -H^-1 B_g L_g^-1 G_g e, and by pixel noise with
+// covariance pixel_sigma^2 H^-1 (sum_g M_g M_g^T) H^-1, M_g = B_g L_g^-1. Returns the
+// unnormalised H^-1 sandwich; `H` is the whitened, weighted normal matrix (pixel units).
+void splitMapError(const geometry::Rig& rig, const std::vector<LandmarkObservation>& obs,
+                   const std::vector<Group>& groups, const geometry::Pose2& pose,
+                   const std::vector<RowsByRows>& factors, const Eigen::Matrix3d& H,
+                   const SolverOptions& options, SolverResult& result) {
+  const Eigen::Matrix3d H_inv = H.inverse();
+  Eigen::Matrix3d pixel_information = Eigen::Matrix3d::Zero();
+  for (size_t g = 0; g < groups.size(); ++g) {
+    const LandmarkObservation& o = obs[groups[g].front()];
+    const MapParameterCovariance variances = mapVariances(o, options);
+    ObservationTerms t = groupTerms(rig, pose, obs, groups[g], /*with_map=*/true);
+    const Eigen::Index rows = t.r.size();
+    if (rows == 0) continue;
+    const RowsByRows& L = factors[g];
+    const bool whitened = L.rows() == rows;
+    if (whitened) {
+      const auto lower = L.triangularView<Eigen::Lower>();
+      lower.solveInPlace(t.r);
+      lower.solveInPlace(t.J);
+      lower.solveInPlace(t.G);
+    }
+    // B = J~^T D, one Huber weight per whitened corner.
+    Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxRows> B = t.J.transpose();
+    for (Eigen::Index k = 0; k + 1 < rows; k += 2) {
+      const double e = t.r.segment<2>(k).norm();
+      const double w = e <= options.huber_threshold_px ? 1.0 : options.huber_threshold_px / e;
+      B.middleCols<2>(k) *= w;
+    }
+    // M = B L^-1 = (L^-T B^T)^T.
+    Eigen::Matrix<double, Eigen::Dynamic, 3, 0, kMaxRows, 3> Mt = B.transpose();
+    if (whitened) L.transpose().triangularView<Eigen::Upper>().solveInPlace(Mt);
+    pixel_information += Mt.transpose() * Mt;
+    if (variances.isZero(0.0)) continue;
+    const Eigen::Matrix<double, 3, 5> J_fix_map = -H_inv * B * t.G;
+    const auto same =
+        std::find_if(result.map_terms.begin(), result.map_terms.end(),
+                     [&](const MapErrorTerm& m) { return m.landmark_id == o.landmark_id; });
+    if (same != result.map_terms.end()) {
+      same->J_fix_map += J_fix_map;
+    } else {
+      result.map_terms.push_back({o.landmark_id, J_fix_map, variances});
+    }
+  }
+  const double pixel_variance = options.pixel_sigma * options.pixel_sigma;
+  result.pixel_covariance = pixel_variance * H_inv * pixel_information * H_inv.transpose();
+  result.pixel_covariance =
+      0.5 * (result.pixel_covariance + result.pixel_covariance.transpose()).eval();
+}
+
 // Mean whitened corner error of one observation at a pose (its whitening taken there);
 // infinity when a corner does not project.
 double meanCornerError(const geometry::RigCamera& camera, const LandmarkObservation& o,
@@ -415,6 +470,7 @@ SolverResult refinePose(const geometry::Rig& rig, const std::vector<LandmarkObse
                             split.eigenvalues().cwiseMax(0.0).asDiagonal() *
                             split.eigenvectors().transpose();
   }
+  splitMapError(rig, obs, groups, result.pose, factors, current.H, options, result);
   if (!result.converged) {
     result.failure =
         "did not converge in " + std::to_string(options.max_iterations) + " iterations";

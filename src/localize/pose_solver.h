@@ -26,6 +26,7 @@
 #include "geometry/pose.h"
 #include "geometry/rig.h"
 #include "localize/landmark_observation.h"
+#include "localize/map_error_term.h"
 
 namespace parkloc::localize {
 
@@ -65,6 +66,12 @@ struct SolverResult {
   // an exact map. Unlike the pixel noise it does not average out over frames that see the
   // same landmarks.
   Eigen::Matrix3d map_covariance = Eigen::Matrix3d::Zero();
+  // The same split made exact through the solve's linearisation: the pose moves by
+  // J_fix_map e for each inlier landmark's map error e (map_terms, landmarks the map states
+  // an accuracy for), and by pixel noise with covariance `pixel_covariance`. With Huber
+  // weights all 1, pixel_covariance + sum J Sigma_e J^T = covariance.
+  std::vector<MapErrorTerm> map_terms;
+  Eigen::Matrix3d pixel_covariance = Eigen::Matrix3d::Zero();
   double rms_px = 0.0;  // over inlier corners, whitened
   // Per observation, in input order: mean corner error (pixels, whitened by the map's error;
   // infinity when it does not project) and whether it was used.

@@ -15,6 +15,12 @@ double positionSigma(const Eigen::Matrix3d& covariance) {
                         .maxCoeff()));
 }
 
+double fixDistance2(const PoseEkf& ekf, const PoseFix& fix) {
+  if (ekf.mapErrorStates() && !fix.map_terms.empty())
+    return ekf.mahalanobis2(fix.pose, fix.pixel_part, fix.map_terms);
+  return ekf.mahalanobis2(fix.pose, fix.covariance);
+}
+
 bool isTracking(const PoseEkf& ekf, const TrackingOptions& options) {
   return ekf.initialised() && positionSigma(ekf.covariance()) <= options.lost_position_sigma_m;
 }
@@ -36,7 +42,10 @@ void TrackLifecycle::startAt(const geometry::Pose2& pose, PoseEkf& ekf) const {
 }
 
 void TrackLifecycle::start(const PoseFix& fix, PoseEkf& ekf, double timestamp) {
-  ekf.initialise(fix.pose, fix.covariance, timestamp);
+  if (ekf.mapErrorStates() && !fix.map_terms.empty())
+    ekf.initialise(fix.pose, fix.pixel_part, fix.map_terms, timestamp);
+  else
+    ekf.initialise(fix.pose, fix.covariance, timestamp);
   fused_.clear();
   disagreeing_fixes_ = 0;
   disagreeing_with_consensus_ = false;
@@ -100,6 +109,8 @@ void TrackLifecycle::apply(const FrameFixes& fixes, bool was_tracking, PoseEkf& 
     // First fix, or re-localisation after the filter got lost.
     start(*fixes.agreeing, ekf, result.timestamp);
     for (const std::string& id : fixes.agreeing->landmarks) ++fused_[id];
+    result.fused_fixes.push_back(
+        {fixes.agreeing->pose, fixes.agreeing->pixel_part, fixes.agreeing->map_terms});
     result.reinitialised = true;
     motion.forgetFixes();
     motion.noteFix(result.timestamp, ekf);
@@ -112,11 +123,17 @@ void TrackLifecycle::apply(const FrameFixes& fixes, bool was_tracking, PoseEkf& 
   }
   if (!fixes.agreeing) return;
   const PoseFix& fix = *fixes.agreeing;
-  double uses = 0.0;
-  for (const std::string& id : fix.landmarks) uses += std::min(fused_[id], options_.map_reuse_cap - 1);
-  const double n = 1.0 + (fix.landmarks.empty() ? 0.0 : uses / fix.landmarks.size());
-  ekf.update(fix.pose, fix.covariance + (n - 1.0) * fix.map_part, fix.floor);
+  if (ekf.mapErrorStates() && !fix.map_terms.empty()) {
+    ekf.update(fix.pose, fix.pixel_part, fix.map_terms);
+  } else {
+    double uses = 0.0;
+    for (const std::string& id : fix.landmarks)
+      uses += std::min(fused_[id], options_.map_reuse_cap - 1);
+    const double n = 1.0 + (fix.landmarks.empty() ? 0.0 : uses / fix.landmarks.size());
+    ekf.update(fix.pose, fix.covariance + (n - 1.0) * fix.map_part, fix.floor);
+  }
   for (const std::string& id : fix.landmarks) ++fused_[id];
+  result.fused_fixes.push_back({fix.pose, fix.pixel_part, fix.map_terms});
   motion.noteFix(result.timestamp, ekf);
   noteConfirmingReads(fix, result);
   if (!fixes.disagreeing) {

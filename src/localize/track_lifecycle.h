@@ -91,7 +91,15 @@ struct PoseFix {
   std::vector<std::string> read_landmarks;
   // Fusing the fix does not take the filter below this (PoseEkf::update).
   Eigen::Matrix3d floor = Eigen::Matrix3d::Zero();
+  // For a filter with map error states (EkfOptions::map_error_landmarks): how each inlier
+  // landmark's map error moves the fix, and the covariance the fix has beside them.
+  std::vector<MapErrorTerm> map_terms;
+  Eigen::Matrix3d pixel_part = Eigen::Matrix3d::Zero();
 };
+
+// The fix's distance from the filter's prediction (squared Mahalanobis), through the map
+// error states where the filter has them.
+double fixDistance2(const PoseEkf& ekf, const PoseFix& fix);
 
 // What parkloc's measurement made of one frame set.
 struct FrameFixes {

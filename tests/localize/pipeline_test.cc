@@ -757,9 +757,8 @@ TEST_F(PipelineTest, ASlowSearchWorkerDelaysNoFrameSet) {
 }
 
 TEST_F(PipelineTest, WaitingForTheSearchWorkerGivesTheSamePosesEveryRun) {
-  // Offline, the worker's texts are fused a fixed number of frame sets after their images:
-  // the first fix (from frame set 0's search) starts the track one frame set later than
-  // inside the frame set, and two runs give the same poses to the last bit.
+  // Offline, the worker's texts are fused a fixed number of frame sets after their images,
+  // and two runs give the same poses to the last bit.
   Drive drive;
   const auto run = [&](bool background) {
     DriveSpotter critical(rig, map, drive), worker(rig, map, drive);
@@ -781,11 +780,17 @@ TEST_F(PipelineTest, WaitingForTheSearchWorkerGivesTheSamePosesEveryRun) {
     EXPECT_EQ(first[k].pose.yaw, second[k].pose.yaw);
     EXPECT_LT(positionError(first[k], drive.truth(k / kFrameRate)), 0.01) << k;
   }
+  // The first fix (from frame set 0's search) starts the track one frame set later.
   EXPECT_EQ(first_inside, 0);
   EXPECT_EQ(first_background, 1);
-  ASSERT_TRUE(first[1].background.has_value());
-  EXPECT_EQ(first[1].background->capture_timestamp, 0.0);
-  EXPECT_EQ(first[1].status, TrackingStatus::kOk);
+  int fused = 0;
+  for (int k = 1; k < 40; ++k) {
+    if (!first[k].background) continue;
+    ++fused;
+    EXPECT_NEAR(first[k].background->capture_timestamp, (k - 1) / kFrameRate, 1e-9) << k;
+    EXPECT_EQ(first[k].status, TrackingStatus::kOk) << k;
+  }
+  EXPECT_GT(fused, 0);
 }
 
 TEST_F(PipelineTest, ReadsOnTheirWorkerLeaveTheFrameSetOnlyFits) {
@@ -801,7 +806,7 @@ TEST_F(PipelineTest, ReadsOnTheirWorkerLeaveTheFrameSetOnlyFits) {
     Pipeline pipeline(rig, map, options, &critical, {&search, &reads});
     for (int k = 0; k < 40; ++k) out.push_back(pipeline.process(driveImages(rig, k, frame(drive, k))));
     EXPECT_EQ(critical.reads, 0);
-    EXPECT_EQ(critical.full_frames, 0);
+    EXPECT_GT(search.full_frames, 0);
     return reads.reads.load();
   };
   std::vector<FrameResult> first, second;

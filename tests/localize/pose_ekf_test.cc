@@ -264,7 +264,6 @@ TEST(PoseEkf, OdometryErrorJacobiansMatchCentralDifferences) {
   EXPECT_NEAR(analytic(2, 1), 0.0, 1e-12);
 }
 
-
 double smallestEigenvalue(const Eigen::Matrix3d& m) {
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(0.5 * (m + m.transpose()))
       .eigenvalues()
@@ -305,6 +304,114 @@ TEST(PoseEkf, RepeatingAFixDoesNotShrinkBelowItsMapPart) {
   naive.initialise(geometry::Pose2(0, 0, 0), Eigen::Vector3d(0.04, 0.04, 0.01).asDiagonal(), 0.0);
   for (int i = 0; i < 200; ++i) naive.update(geometry::Pose2(0, 0, 0), pixel_part + map_part);
   EXPECT_LT(naive.covariance()(0, 0), 0.1 * map_part(0, 0));
+}
+
+}  // namespace
+}  // namespace parkloc::localize
+
+namespace parkloc::localize {
+namespace {
+
+// A fix's map term whose landmark error moves it as the landmark's position does.
+MapErrorTerm positionTerm(const std::string& id, double sigma) {
+  MapErrorTerm t;
+  t.landmark_id = id;
+  t.J_fix_map(0, 0) = t.J_fix_map(1, 1) = 1.0;
+  t.variance << sigma * sigma, sigma * sigma, 0.0, 0.0, 0.0;
+  return t;
+}
+
+EkfOptions withMapStates(int landmarks) {
+  EkfOptions o;
+  o.map_error_landmarks = landmarks;
+  return o;
+}
+
+TEST(PoseEkfMapErrors, RepeatedFixesOfOneLandmarkNeverAverageItsMapError) {
+  // A still vehicle and n fixes of one landmark: the pixel noise averages (R / n), the
+  // landmark's map error (sigma^2) stays.
+  PoseEkf ekf(withMapStates(8));
+  const Eigen::Matrix3d R = Eigen::Vector3d(4e-4, 4e-4, 1e-5).asDiagonal();
+  const MapErrorTerm term = positionTerm("A", 0.1);
+  ekf.initialise({1.0, 2.0, 0.0}, R, {term}, 0.0);
+  const int n = 25;
+  for (int i = 1; i < n; ++i) ekf.update({1.0, 2.0, 0.0}, R, {term});
+  const Eigen::Matrix3d expected =
+      R / n + Eigen::Vector3d(0.01, 0.01, 0.0).asDiagonal().toDenseMatrix();
+  EXPECT_TRUE(ekf.covariance().isApprox(expected, 1e-9)) << ekf.covariance();
+  // As independent fixes they would claim R_total / n.
+  EXPECT_GT(ekf.covariance()(0, 0), 10.0 * (R(0, 0) + 0.01) / n);
+}
+
+TEST(PoseEkfMapErrors, FixesOfDifferentLandmarksAverageTheirErrors) {
+  PoseEkf ekf(withMapStates(8));
+  const Eigen::Matrix3d R = Eigen::Vector3d(4e-4, 4e-4, 1e-5).asDiagonal();
+  const Eigen::Matrix3d M = Eigen::Vector3d(0.01, 0.01, 0.0).asDiagonal();
+  ekf.initialise({0.0, 0.0, 0.0}, R, {positionTerm("A", 0.1)}, 0.0);
+  ekf.update({0.0, 0.0, 0.0}, R, {positionTerm("B", 0.1)});
+  const Eigen::Matrix2d expected = 0.5 * (R + M).topLeftCorner<2, 2>();
+  EXPECT_TRUE(ekf.covariance().topLeftCorner(2, 2).isApprox(expected, 1e-9)) << ekf.covariance();
+  // The landmarks' errors are estimated: A's and B's fixes disagreeing by 20 cm puts each
+  // landmark's error +-10 cm (half the disagreement to each, equal sigmas).
+  PoseEkf split(withMapStates(8));
+  split.initialise({0.1, 0.0, 0.0}, R, {positionTerm("A", 0.1)}, 0.0);
+  split.update({-0.1, 0.0, 0.0}, R, {positionTerm("B", 0.1)});
+  ASSERT_EQ(split.mapErrorLandmarks().size(), 2u);
+  EXPECT_NEAR(split.pose().x, 0.0, 1e-9);
+  EXPECT_NEAR(split.mapError(0)(0), 0.1 * 0.01 / (0.01 + R(0, 0)), 1e-9);
+  EXPECT_NEAR(split.mapError(1)(0), -0.1 * 0.01 / (0.01 + R(0, 0)), 1e-9);
+}
+
+TEST(PoseEkfMapErrors, GateDistanceOfANewLandmarkIsThatOfItsWholeCovariance) {
+  PoseEkf with(withMapStates(8)), without;
+  const Eigen::Matrix3d P = Eigen::Vector3d(1e-3, 2e-3, 1e-4).asDiagonal();
+  with.initialise({0.0, 0.0, 0.0}, P, 0.0);
+  without.initialise({0.0, 0.0, 0.0}, P, 0.0);
+  const Eigen::Matrix3d R = Eigen::Vector3d(4e-4, 4e-4, 1e-5).asDiagonal();
+  const MapErrorTerm term = positionTerm("A", 0.1);
+  const geometry::Pose2 fix(0.2, -0.1, 0.01);
+  const Eigen::Matrix3d whole =
+      R + term.J_fix_map * term.variance.asDiagonal() * term.J_fix_map.transpose();
+  EXPECT_NEAR(with.mahalanobis2(fix, R, {term}), without.mahalanobis2(fix, whole), 1e-9);
+  // Fusing it moves the pose exactly as the plain filter with the whole covariance does.
+  with.update(fix, R, {term});
+  without.update(fix, whole);
+  EXPECT_NEAR(with.pose().x, without.pose().x, 1e-12);
+  EXPECT_TRUE(with.covariance().isApprox(without.covariance(), 1e-9));
+  // A second fix of the same landmark is then closer than as a stranger: its error is known.
+  EXPECT_LT(with.mahalanobis2(fix, R, {term}), without.mahalanobis2(fix, whole));
+}
+
+TEST(PoseEkfMapErrors, KeepsTheLandmarksSeenLastAndStaysPositiveDefinite) {
+  PoseEkf ekf(withMapStates(2));
+  const Eigen::Matrix3d R = Eigen::Vector3d(4e-4, 4e-4, 1e-5).asDiagonal();
+  ekf.initialise({0.0, 0.0, 0.0}, R, {positionTerm("A", 0.1)}, 0.0);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0.0, 0.02);
+  const std::vector<std::string> seen = {"B", "A", "C", "D", "C"};
+  for (const std::string& id : seen) {
+    ekf.predictWithOdometry(1.0, 0.05, 0.5);
+    ekf.update({ekf.pose().x + noise(rng), ekf.pose().y + noise(rng), ekf.pose().yaw}, R,
+               {positionTerm(id, 0.1)});
+  }
+  EXPECT_EQ(ekf.mapErrorLandmarks(), (std::vector<std::string>{"C", "D"}));
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(ekf.covariance());
+  EXPECT_GT(eigen.eigenvalues().minCoeff(), 0.0);
+  // A re-initialisation forgets them.
+  ekf.initialise({0.0, 0.0, 0.0}, R, 1.0);
+  EXPECT_TRUE(ekf.mapErrorLandmarks().empty());
+}
+
+TEST(PoseEkfMapErrors, WithoutMapStatesTheTermsJoinTheFixCovariance) {
+  PoseEkf a, b;
+  a.initialise({0.0, 0.0, 0.0}, Eigen::Matrix3d::Identity() * 1e-2, 0.0);
+  b.initialise({0.0, 0.0, 0.0}, Eigen::Matrix3d::Identity() * 1e-2, 0.0);
+  const Eigen::Matrix3d R = Eigen::Vector3d(4e-4, 4e-4, 1e-5).asDiagonal();
+  const MapErrorTerm term = positionTerm("A", 0.1);
+  a.update({0.1, 0.0, 0.0}, R, {term});
+  b.update({0.1, 0.0, 0.0}, R + Eigen::Vector3d(0.01, 0.01, 0.0).asDiagonal().toDenseMatrix());
+  EXPECT_TRUE(a.mapErrorLandmarks().empty());
+  EXPECT_NEAR(a.pose().x, b.pose().x, 1e-12);
 }
 
 }  // namespace

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <random>
 
 #include "map/map_noise.h"
@@ -137,7 +140,6 @@ TEST(PoseSolver, ReportsNonConvergenceWithTooFewIterations) {
   EXPECT_NE(result.failure.find("converge"), std::string::npos);
 }
 
-
 TEST(PoseSolver, CornerJacobianMatchesCentralDifferences) {
   const auto rig = geometry::defaultRig();
   const geometry::Pose2 pose(1.0, -0.5, 0.4);
@@ -211,6 +213,64 @@ TEST(PoseSolver, MapErrorIsMarginalisedIntoAnHonestCovariance) {
   EXPECT_GT(nees_ignored, 30.0);
   // Weighting by the map's error is no worse than treating corners as independent.
   EXPECT_LT(error_stated, 1.05 * error_ignored);
+}
+
+// A landmark's map corners moved by the map error e (x, y, heading, log width, log height):
+// shifted, turned about their centre, stretched along their half-width and half-height.
+std::array<Eigen::Vector3d, 4> movedCorners(const std::array<Eigen::Vector3d, 4>& c,
+                                            const Eigen::Matrix<double, 5, 1>& e) {
+  const Eigen::Vector3d centre = 0.25 * (c[0] + c[1] + c[2] + c[3]);
+  const Eigen::Vector3d half_width = 0.25 * (c[1] - c[0] + c[2] - c[3]);
+  const Eigen::Vector3d half_height = 0.25 * (c[0] - c[3] + c[1] - c[2]);
+  constexpr double kWidthSign[4] = {-1.0, 1.0, 1.0, -1.0};
+  constexpr double kHeightSign[4] = {1.0, 1.0, -1.0, -1.0};
+  std::array<Eigen::Vector3d, 4> out;
+  for (int i = 0; i < 4; ++i) {
+    Eigen::Vector3d d = c[i] - centre + kWidthSign[i] * (std::exp(e(3)) - 1.0) * half_width +
+                        kHeightSign[i] * (std::exp(e(4)) - 1.0) * half_height;
+    const double cs = std::cos(e(2)), sn = std::sin(e(2));
+    d = Eigen::Vector3d(cs * d.x() - sn * d.y(), sn * d.x() + cs * d.y(), d.z());
+    out[i] = centre + d + Eigen::Vector3d(e(0), e(1), 0.0);
+  }
+  return out;
+}
+
+TEST(PoseSolver, MapTermsPredictHowALandmarksMapErrorMovesTheFix) {
+  const auto rig = geometry::defaultRig();
+  const auto map = aisleMap();
+  const geometry::Pose2 truth(12.0, 0.2, 0.15);
+  auto obs = observeExactly(rig, map, truth);
+  ASSERT_GE(obs.size(), 3u);
+  for (auto& o : obs) o.accuracy = {0.05, 0.5 * kDeg};
+  SolverOptions options;
+  options.max_iterations = 50;
+  const auto exact = refinePose(rig, obs, truth, options);
+  ASSERT_TRUE(exact.ok) << exact.failure;
+  // Every inlier landmark has a term; with Huber weights of 1 the split is exact.
+  EXPECT_FALSE(exact.map_terms.empty());
+  Eigen::Matrix3d total = exact.pixel_covariance;
+  for (const MapErrorTerm& t : exact.map_terms)
+    total += t.J_fix_map * t.variance.asDiagonal() * t.J_fix_map.transpose();
+  EXPECT_TRUE(total.isApprox(exact.covariance, 1e-6)) << total << "\n" << exact.covariance;
+
+  // One landmark's map entry off by e: the fix moves by J_fix_map e (to first order).
+  const std::string id = obs.front().landmark_id;
+  Eigen::Matrix<double, 5, 1> e;
+  e << 0.01, -0.006, 0.3 * kDeg, 0.01, -0.01;
+  auto moved = obs;
+  for (auto& o : moved)
+    if (o.landmark_id == id) o.map_corners = movedCorners(o.map_corners, e);
+  const auto off = refinePose(rig, moved, truth, options);
+  ASSERT_TRUE(off.ok) << off.failure;
+  const auto term = std::find_if(exact.map_terms.begin(), exact.map_terms.end(),
+                                 [&](const MapErrorTerm& t) { return t.landmark_id == id; });
+  ASSERT_NE(term, exact.map_terms.end());
+  const Eigen::Vector3d predicted = term->J_fix_map * e;
+  const Eigen::Vector3d actual(off.pose.x - exact.pose.x, off.pose.y - exact.pose.y,
+                               geometry::wrapAngle(off.pose.yaw - exact.pose.yaw));
+  EXPECT_GT(actual.head<2>().norm(), 2e-4);  // the error does move the fix
+  EXPECT_LT((predicted - actual).norm(), 0.05 * actual.norm() + 1e-5)
+      << predicted.transpose() << " against " << actual.transpose();
 }
 
 TEST(PoseSolver, ExactMapStatedHasNoMapCovariance) {

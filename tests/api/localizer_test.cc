@@ -140,6 +140,25 @@ class LocalizerDrive : public ::testing::Test {
     return std::move(*made.localizer);
   }
 
+  // The drive's odometry and images fed as they arrive, camera by camera in capture order;
+  // the estimates the localizer returned meanwhile.
+  static std::vector<PoseEstimate> feed(Localizer& localizer) {
+    const auto& s = *sequence_;
+    size_t odometry = 0;
+    std::vector<PoseEstimate> estimates;
+    for (size_t i = 0; i < s.timestamps().size(); ++i) {
+      for (const std::string& camera : s.cameras()) {
+        const double t = *s.captureTime(i, camera);
+        for (; odometry < s.odometry().size() && s.odometry()[odometry].timestamp <= t; ++odometry)
+          localizer.addOdometry(s.odometry()[odometry].timestamp, s.odometry()[odometry].speed,
+                                s.odometry()[odometry].yaw_rate);
+        for (auto& e : localizer.addImage(camera, t, s.loadImage(i, camera)))
+          estimates.push_back(std::move(e));
+      }
+    }
+    return estimates;
+  }
+
   static inline fs::path dir_;
   static inline io::Sequence* sequence_ = nullptr;
 };
@@ -147,18 +166,7 @@ class LocalizerDrive : public ::testing::Test {
 TEST_F(LocalizerDrive, ImagesAndOdometryAsTheyArriveGiveThePoseOfEachFrameSet) {
   Localizer localizer = make();
   const auto& s = *sequence_;
-  size_t odometry = 0;
-  std::vector<PoseEstimate> estimates;
-  for (size_t i = 0; i < s.timestamps().size(); ++i) {
-    for (const std::string& camera : s.cameras()) {
-      const double t = *s.captureTime(i, camera);
-      for (; odometry < s.odometry().size() && s.odometry()[odometry].timestamp <= t; ++odometry)
-        localizer.addOdometry(s.odometry()[odometry].timestamp, s.odometry()[odometry].speed,
-                              s.odometry()[odometry].yaw_rate);
-      for (auto& e : localizer.addImage(camera, t, s.loadImage(i, camera)))
-        estimates.push_back(std::move(e));
-    }
-  }
+  const std::vector<PoseEstimate> estimates = feed(localizer);
   EXPECT_FALSE(localizer.flush().has_value());  // every set held all four cameras
   ASSERT_EQ(estimates.size(), s.timestamps().size());
 
@@ -189,21 +197,12 @@ TEST_F(LocalizerDrive, TheWorkersTheConfigurationAsksForSpotBesideTheFrameSets) 
   Localizer localizer =
       make(std::string(PARKLOC_SOURCE_DIR) + "/tests/data/config/workers_waiting.yaml");
   const auto& s = *sequence_;
-  size_t odometry = 0;
   int posed = 0;
-  for (size_t i = 0; i < s.timestamps().size(); ++i) {
-    for (const std::string& camera : s.cameras()) {
-      const double t = *s.captureTime(i, camera);
-      for (; odometry < s.odometry().size() && s.odometry()[odometry].timestamp <= t; ++odometry)
-        localizer.addOdometry(s.odometry()[odometry].timestamp, s.odometry()[odometry].speed,
-                              s.odometry()[odometry].yaw_rate);
-      for (const PoseEstimate& e : localizer.addImage(camera, t, s.loadImage(i, camera))) {
-        if (!e.has_pose) continue;
-        ++posed;
-        const Eigen::Vector3d truth = truthAt(s, e.timestamp);
-        EXPECT_LT(std::hypot(e.x - truth.x(), e.y - truth.y()), 0.2) << "frame set " << i;
-      }
-    }
+  for (const PoseEstimate& e : feed(localizer)) {
+    if (!e.has_pose) continue;
+    ++posed;
+    const Eigen::Vector3d truth = truthAt(s, e.timestamp);
+    EXPECT_LT(std::hypot(e.x - truth.x(), e.y - truth.y()), 0.2) << "at " << e.timestamp;
   }
   EXPECT_GE(posed, kFrames / 2 - 1) << "the workers' texts were not fused";
 }

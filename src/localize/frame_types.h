@@ -154,12 +154,14 @@ struct FrameResult {
 
   std::vector<CameraResult> cameras;
   std::vector<Association> associations;
-  // Cameras whose full frame went to the search worker this frame set (their CameraResult
-  // holds only what the critical path spotted), and what the worker gave back and was fused.
+  // Cameras whose full frame went to a worker this frame set (their CameraResult holds only
+  // what the critical path spotted), and what the search worker gave back and was fused.
   std::vector<std::string> background_cameras;
   std::optional<BackgroundFusion> background;
   // Cameras whose reads at predicted places went to the read worker this frame set
-  // (RealtimeOptions::background_reads), and the reads of an earlier frame set fused here.
+  // (RealtimeOptions::background_reads), and what the read worker gave back and was fused
+  // here: reads of an earlier frame set, or full frames while there was no track to read for
+  // (CameraResult::full_frame).
   std::vector<std::string> deferred_read_cameras;
   std::optional<BackgroundFusion> deferred_reads;
   StageTimings timings;

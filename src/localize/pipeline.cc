@@ -35,22 +35,23 @@ struct Pipeline::Impl {
 
   // Work off the critical path (search_worker.h): the full frames on the search worker
   // (options.realtime.background_search), the reads at predicted places on the read worker
-  // (background_reads); each lane remembers its job's frame set as it was when its images
-  // were taken: the filter's prediction, the rig and the travel, for the late fusion.
+  // (background_reads), which takes full frames too while there is no track to read for;
+  // each lane remembers its job's frame set as it was when its images were taken: the
+  // filter's prediction, the rig and the travel, for the late fusion.
   struct PendingJob {
     long frame = -1;
     PoseEkf ekf;  // predicted to the frame set, before its measurement
     geometry::Rig rig;
     geometry::Pose2 travelled;
+    bool full_frames = false;  // its texts come from full frames (CameraResult::full_frame)
   };
   struct Lane {
     std::unique_ptr<SearchWorker> worker;
     std::optional<PendingJob> pending;
-    bool full_frames = false;  // its texts come from full frames (CameraResult::full_frame)
   };
   std::unique_ptr<SerializedSpotter> shared_spotter;  // without a search spotter of its own
-  Lane search_lane{nullptr, std::nullopt, true};
-  Lane read_lane{nullptr, std::nullopt, false};
+  Lane search_lane;
+  Lane read_lane;
   long frame_index = -1;
   // The vehicle's path so far in the frame of the first frame set (odometry, through the
   // filter's prediction when it runs): the motion between two frame sets' poses on it.
@@ -95,7 +96,37 @@ struct Pipeline::Impl {
     // frame set wait for a read in progress.
     if (o.realtime.background_reads && !o.paper_mode && workers.reads)
       read_lane.worker = std::make_unique<SearchWorker>(workers.reads, o.realtime.worker_nice);
+    if (o.realtime.warm_up && !o.paper_mode) warmUp();
     reset();
+  }
+
+  // Every spotter spots a blank full frame of each camera as the search would, the workers
+  // on their threads while the critical path's spotter does the same here.
+  void warmUp() {
+    ReadPlan plan;
+    plan.choice.full_frame.assign(nominal_rig.cameras.size(), true);
+    plan.choice.searching = true;
+    plan.regions.resize(nominal_rig.cameras.size());
+    SearchJob job;
+    for (size_t c = 0; c < nominal_rig.cameras.size(); ++c) {
+      const auto& model = nominal_rig.cameras[c].model;
+      if (model.width <= 0 || model.height <= 0) continue;
+      job.cameras.push_back(c);
+      job.images.emplace_back(model.height, model.width, CV_8UC3, cv::Scalar::all(128));
+      job.requests.push_back(reading.request(c, plan, geometry::Pose2()));
+    }
+    for (Lane* lane : {&search_lane, &read_lane})
+      if (lane->worker) lane->worker->submit(job);
+    if (spotter && !shared_spotter)
+      for (size_t k = 0; k < job.cameras.size(); ++k) {
+        try {
+          spotter->spot(job.images[k], job.requests[k]);
+        } catch (const std::exception&) {
+          // A spotter that fails on a blank frame will say so on the first real one.
+        }
+      }
+    for (Lane* lane : {&search_lane, &read_lane})
+      if (lane->worker) lane->worker->wait();
   }
 
   void reset() {
@@ -149,9 +180,15 @@ struct Pipeline::Impl {
 
     // 2. Read planning: map-guided regions while tracking, the full frame now and then.
     const Stopwatch planning_time;
-    ReadPlan plan = reading.plan(tracking, ekf, level, search_lane.worker != nullptr,
-                                 tracking && lifecycle.tentative());
-    if (search_lane.worker) handOverFullFrames(frame, plan, result);
+    const std::vector<Lane*> full_frame_lanes = freeFullFrameLanes(tracking);
+    // Reads due while the read worker is busy wait for it: the critical path only fits.
+    const bool reads_wait = tracking && read_lane.worker && read_lane.worker->busy();
+    ReadPlan plan = reading.plan(
+        tracking, ekf, level,
+        search_lane.worker ? std::optional<int>(static_cast<int>(full_frame_lanes.size()))
+                           : std::nullopt,
+        tracking && lifecycle.tentative(), reads_wait);
+    if (search_lane.worker) handOverFullFrames(frame, full_frame_lanes, plan, result);
     if (read_lane.worker && tracking) handOverReads(frame, plan, result);
     result.timings.roi_ms += planning_time.elapsedMs();
 
@@ -197,28 +234,41 @@ struct Pipeline::Impl {
     return nullptr;
   }
 
-  // The full frames of the plan go to the search worker, when it is free; either way the
-  // critical path spots none of them.
-  void handOverFullFrames(const FrameInput& frame, ReadPlan& plan, FrameResult& result) {
-    // A full frame due while the worker is still busy is skipped: the schedule comes back to
-    // the camera a few frame sets later.
-    const bool free = !search_lane.worker->busy();
-    SearchJob job;
-    for (size_t c = 0; c < nominal_rig.cameras.size(); ++c) {
-      if (!free || !plan.choice.full_frame[c]) continue;
+  // The lanes free to take full frames now: the search worker, and the read worker while
+  // there is no track to read for (searching, lost): before the first fix the critical path
+  // has nothing to spot, and two workers search twice the cameras.
+  std::vector<Lane*> freeFullFrameLanes(bool tracking) {
+    std::vector<Lane*> lanes;
+    if (!search_lane.worker) return lanes;
+    if (!search_lane.worker->busy()) lanes.push_back(&search_lane);
+    if (!tracking && read_lane.worker && !read_lane.worker->busy()) lanes.push_back(&read_lane);
+    return lanes;
+  }
+
+  // The full frames of the plan go to the free lanes, shared out camera by camera; either
+  // way the critical path spots none of them. (The schedule chose no more than the lanes can
+  // take; none when no lane is free, and its turn waits.)
+  void handOverFullFrames(const FrameInput& frame, const std::vector<Lane*>& lanes,
+                          ReadPlan& plan, FrameResult& result) {
+    std::vector<SearchJob> jobs(lanes.size());
+    size_t next = 0;
+    for (size_t c = 0; c < nominal_rig.cameras.size() && !lanes.empty(); ++c) {
+      if (!plan.choice.full_frame[c]) continue;
       if (const cv::Mat* image = spottableImage(frame, c)) {
+        SearchJob& job = jobs[next++ % lanes.size()];
         job.cameras.push_back(c);
         job.images.push_back(image->clone());  // the caller may reuse its buffers
         job.requests.push_back(reading.request(c, plan, ekf.pose()));
+        result.background_cameras.push_back(nominal_rig.cameras[c].name);
       }
     }
     std::fill(plan.choice.full_frame.begin(), plan.choice.full_frame.end(), false);
-    for (size_t c : job.cameras) result.background_cameras.push_back(nominal_rig.cameras[c].name);
-    submit(search_lane, frame, std::move(job));
+    for (size_t k = 0; k < lanes.size(); ++k)
+      submit(*lanes[k], frame, std::move(jobs[k]), /*full_frames=*/true);
   }
 
-  // The plan's reads go to the read worker, when it is free (else they stay in the frame
-  // set); the critical path keeps the fits.
+  // The plan's reads go to the read worker (free: the plan has none while it is busy); the
+  // critical path keeps the fits.
   void handOverReads(const FrameInput& frame, ReadPlan& plan, FrameResult& result) {
     if (read_lane.worker->busy()) return;
     ReadPlan reads = plan;
@@ -239,14 +289,14 @@ struct Pipeline::Impl {
       job.requests.push_back(reading.request(c, reads, ekf.pose()));
       result.deferred_read_cameras.push_back(nominal_rig.cameras[c].name);
     }
-    submit(read_lane, frame, std::move(job));
+    submit(read_lane, frame, std::move(job), /*full_frames=*/false);
   }
 
-  void submit(Lane& lane, const FrameInput& frame, SearchJob job) {
+  void submit(Lane& lane, const FrameInput& frame, SearchJob job, bool full_frames) {
     if (job.cameras.empty()) return;
     job.frame = frame_index;
     job.timestamp = frame.timestamp;
-    lane.pending = PendingJob{frame_index, ekf, rig, travelled};
+    lane.pending = PendingJob{frame_index, ekf, rig, travelled, full_frames};
     lane.worker->submit(std::move(job));
   }
 
@@ -262,15 +312,16 @@ struct Pipeline::Impl {
       done = lane.worker->poll();
     }
     if (!done) return;
-    fuseLate(*lane.pending, lane.full_frames, *done, result, fused);
+    fuseLate(*lane.pending, *done, result, fused);
     lane.pending.reset();
   }
 
   // The worker's texts as they would have been fused at their capture time: associated
   // against the filter's prediction then, each camera where it stood then, and the fix
   // carried to the present by the motion since (late_fusion.h).
-  void fuseLate(const PendingJob& then, bool full_frames, const SearchResult& done,
-                FrameResult& result, std::optional<BackgroundFusion>& fused_out) {
+  void fuseLate(const PendingJob& then, const SearchResult& done, FrameResult& result,
+                std::optional<BackgroundFusion>& fused_out) {
+    const bool full_frames = then.full_frames;
     const geometry::Pose2 motion_since = then.travelled.inverse() * travelled;
     FrameResult late;
     late.timestamp = result.timestamp;

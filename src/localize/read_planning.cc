@@ -32,14 +32,15 @@ void ReadPlanner::reset() {
 }
 
 ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimate& level,
-                           bool full_frames_elsewhere, bool tentative) {
+                           std::optional<int> worker_slots, bool tentative, bool no_reads) {
+  const bool full_frames_elsewhere = worker_slots.has_value();
   ++frame_index_;
   const size_t n_cameras = rig_.cameras.size();
   ReadPlan plan;
   plan.tracking = tracking;
   plan.tentative = tentative && options_.tentative_reads_whole_lexicon;
   plan.level = level.restriction();
-  plan.choice = schedule_.next(n_cameras, tracking, ekf.initialised(), tentative);
+  plan.choice = schedule_.next(n_cameras, tracking, ekf.initialised(), tentative, worker_slots);
   plan.regions.resize(n_cameras);
   if (plan.choice.all) return plan;
 
@@ -89,14 +90,14 @@ ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimat
   }
   candidates = std::move(kept);
   // A frame set that sweeps a camera on the full frame spends its reads there.
-  if (options_.reread_interval_frames > 0) chooseReadsAndFits(candidates, sweeping);
+  if (options_.reread_interval_frames > 0) chooseReadsAndFits(candidates, sweeping || no_reads);
   return plan;
 }
 
 // Texts read lately are only fitted; of the others, the largest are read, at most
 // max_reads_per_frame over all cameras; the rest wait for a later frame set.
 void ReadPlanner::chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& candidates,
-                                     bool sweeping) {
+                                     bool no_reads) {
   struct Unread {
     size_t camera, index;
     double size;
@@ -123,7 +124,7 @@ void ReadPlanner::chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& 
   }
   std::stable_sort(unread.begin(), unread.end(),
                    [](const Unread& a, const Unread& b) { return a.size > b.size; });
-  const size_t reads = sweeping ? 0
+  const size_t reads = no_reads ? 0
                        : options_.max_reads_per_frame > 0
                            ? std::min(unread.size(), size_t(options_.max_reads_per_frame))
                            : unread.size();

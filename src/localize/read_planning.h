@@ -15,6 +15,7 @@
 //
 // The paper's pipeline (OCR-RTPS) spots every camera on the full frame every frame set.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -140,8 +141,12 @@ class FullFrameSchedule {
   void reset() { *this = FullFrameSchedule(options_, guided_); }
   // `tracking`: the filter's pose is good enough to predict regions; `initialised`: the
   // filter has a pose at all (lost or not); `tentative`: the track is tentative
-  // (tentative_full_frame_interval).
-  FullFrameChoice next(size_t n_cameras, bool tracking, bool initialised, bool tentative = false);
+  // (tentative_full_frame_interval). `worker_slots`: the full frames go to workers
+  // (search_worker.h), this many of them free this frame set; nullopt: spotted inside the
+  // frame set. With no worker free the turn waits: the camera due is the next one taken,
+  // so that a busy worker skips no camera of the search or the sweep.
+  FullFrameChoice next(size_t n_cameras, bool tracking, bool initialised, bool tentative = false,
+                       std::optional<int> worker_slots = std::nullopt);
 
  private:
   ReadingOptions options_;
@@ -150,6 +155,7 @@ class FullFrameSchedule {
   int tracking_frames_ = 0;          // frame sets since the track began
   size_t next_sweep_camera_ = 0;
   size_t next_search_camera_ = 0;
+  bool sweep_waiting_ = false;  // a sweep came due while no worker was free
 };
 
 // The plan of one frame set.
@@ -173,11 +179,15 @@ class ReadPlanner {
   // The plan of the next frame set at the filter's predicted pose. `tracking`: the filter's
   // pose is good enough to predict regions; `level`: the levels to look for (the decided
   // one, else every level, a shared place read once for any of its texts).
-  // `full_frames_elsewhere`: the full frames are spotted off the frame set's critical path
-  // (search_worker.h), so a sweep's camera gets its regions as well and a sweep costs the
-  // frame set none of its reads. `tentative`: the track is tentative (track_lifecycle.h).
+  // `worker_slots`: the full frames are spotted off the frame set's critical path
+  // (search_worker.h) by this many workers free now, so a sweep's camera gets its regions as
+  // well and a sweep costs the frame set none of its reads; nullopt: inside the frame set.
+  // `tentative`: the track is tentative (track_lifecycle.h). `no_reads`: only fits this
+  // frame set (the reads' worker is busy); the texts due a read are not marked as tried and
+  // come up again in the next plan.
   ReadPlan plan(bool tracking, const PoseEkf& ekf, const LevelEstimate& level,
-                bool full_frames_elsewhere = false, bool tentative = false);
+                std::optional<int> worker_slots = std::nullopt, bool tentative = false,
+                bool no_reads = false);
 
   // Camera c's request (its regions are moved out of the plan).
   ocr::SpotRequest request(size_t c, ReadPlan& plan, const geometry::Pose2& pose) const;
@@ -189,7 +199,7 @@ class ReadPlanner {
   const ReadingOptions& options() const { return options_; }
 
  private:
-  void chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& candidates, bool sweeping);
+  void chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& candidates, bool no_reads);
 
   const geometry::Rig& rig_;
   const geometry::Rig& calibrated_rig_;

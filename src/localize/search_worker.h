@@ -45,8 +45,16 @@ struct RealtimeOptions {
   // patch and the recognizer, 10-20 ms a read on two cores, the bulk of a tracked frame set's
   // time) run on a worker of their own with its own spotter, and their texts are fused like
   // the full frames', at their capture time; the critical path keeps the ink fits of the
-  // texts read lately. false, or without that spotter: the reads stay inside the frame set.
+  // texts read lately; reads due while the read worker is busy wait for a frame set that
+  // finds it free. While there is no track to read for (before the first fix, lost), that
+  // worker takes full frames beside the search worker, other cameras of the turn. false, or
+  // without that spotter: the reads stay inside the frame set.
   bool background_reads = false;
+  // At construction every spotter (the critical path's and the workers') spots a blank full
+  // frame of each camera, as a vehicle would before it drives off: the first inference of
+  // an engine allocates its buffers and costs 2-3 times a later one, which would otherwise
+  // fall on the first frame sets, the search for the first fix.
+  bool warm_up = false;
 };
 
 // The spotters of the workers, each owned by the caller and called by its worker alone
@@ -94,6 +102,7 @@ class SearchWorker {
   std::optional<SearchResult> poll();
   // The result, waiting for the worker to finish it; nullopt when not busy.
   std::optional<SearchResult> wait();
+
 
  private:
   void run(int nice);

@@ -74,7 +74,10 @@ RunSummary runSequence(const io::Sequence& sequence, ocr::TextSpotter* spotter,
   FaultInjector injector(options.faults, sequence.timestamps(), sequence.groundTruth(),
                          sequence.odometry());
   localize::PipelineOptions pipeline_options = options.pipeline;
-  if (options.realtime) pipeline_options.realtime.wait_for_worker = false;
+  if (options.realtime) {
+    pipeline_options.realtime.wait_for_worker = false;
+    pipeline_options.realtime.warm_up = true;  // a vehicle starts its engines before it drives
+  }
   ocr::TextSpotter* const wrapped = injector.wrapSpotter(spotter);
   localize::Pipeline pipeline(sequence.rig(),
                               options.map_noise.position_sigma_m > 0.0

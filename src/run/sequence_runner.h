@@ -29,7 +29,8 @@ struct RunOptions {
   // Feed the frame sets at their recorded rate, as cameras would (`parkloc run --realtime`):
   // frame set i is released at its capture time after the first one's and dropped when the
   // previous one is still being processed then (its odometry goes to the next one); the
-  // search worker's texts are fused when ready (RealtimeOptions::wait_for_worker off).
+  // search worker's texts are fused when ready (RealtimeOptions::wait_for_worker off), and
+  // the spotters are warmed up before the first frame set (RealtimeOptions::warm_up).
   // Reading the images from disk happens before the release, as a camera delivers them.
   bool realtime = false;
 };

@@ -61,6 +61,49 @@ TEST(FullFrameScheduleTest, BeforeTheFirstFixOneCameraPerFrameSetIsSearchedInTur
   }
 }
 
+TEST(FullFrameScheduleTest, OnWorkersTheSearchTakesACameraPerFreeWorkerAndWaitsForOne) {
+  // The search's turn goes on where it stopped: a busy worker makes the camera due wait, it
+  // does not skip it; two free workers search two cameras.
+  ReadingOptions options;
+  options.search_cameras_per_frame = 1;
+  FullFrameSchedule schedule(options, true);
+  const auto cameras = [](const FullFrameChoice& choice) {
+    std::vector<size_t> out;
+    for (size_t c = 0; c < choice.full_frame.size(); ++c)
+      if (choice.full_frame[c]) out.push_back(c);
+    return out;
+  };
+  EXPECT_EQ(cameras(schedule.next(kCameras, false, false, false, 1)), std::vector<size_t>{0});
+  const FullFrameChoice busy = schedule.next(kCameras, false, false, false, 0);
+  EXPECT_TRUE(busy.searching);
+  EXPECT_TRUE(cameras(busy).empty());
+  EXPECT_EQ(cameras(schedule.next(kCameras, false, false, false, 1)), std::vector<size_t>{1});
+  EXPECT_EQ(cameras(schedule.next(kCameras, false, false, false, 2)), (std::vector<size_t>{2, 3}));
+  EXPECT_EQ(cameras(schedule.next(kCameras, false, false, false, 2)), (std::vector<size_t>{0, 1}));
+}
+
+TEST(FullFrameScheduleTest, ASweepDueWhileTheWorkerIsBusyGoesToItWhenItIsFree) {
+  ReadingOptions options;
+  options.full_frame_interval = 8;
+  FullFrameSchedule inline_schedule(options, true), worker(options, true);
+  std::vector<size_t> inline_sweeps, worker_sweeps;
+  for (int k = 0; k < 16; ++k) {
+    const FullFrameChoice a = inline_schedule.next(kCameras, true, true);
+    // The worker is busy on frame sets 1 and 9, when sweeps come due (1, 3, 5, ...).
+    const bool free = k % 8 != 1;
+    const FullFrameChoice b = worker.next(kCameras, true, true, false, free ? 1 : 0);
+    ASSERT_LE(countTrue(b.full_frame), 1);
+    EXPECT_TRUE(free || !b.sweeping) << k;
+    for (size_t c = 0; c < kCameras; ++c) {
+      if (a.full_frame[c]) inline_sweeps.push_back(c);
+      if (b.full_frame[c]) worker_sweeps.push_back(c);
+    }
+  }
+  // The same cameras in the same order: none skipped, the held ones a frame set late.
+  EXPECT_EQ(worker_sweeps, inline_sweeps);
+  EXPECT_EQ(worker_sweeps.size(), 8u);
+}
+
 TEST(FullFrameScheduleTest, ALostTrackAndThePapersPipelineSpotEveryCameraEveryFrameSet) {
   ReadingOptions options;
   FullFrameSchedule lost(options, true), paper(options, /*guided=*/false);

@@ -829,6 +829,73 @@ TEST_F(PipelineTest, ReadsOnTheirWorkerLeaveTheFrameSetOnlyFits) {
   EXPECT_TRUE(first[1].has_pose);
 }
 
+TEST_F(PipelineTest, BeforeTheFirstFixBothWorkersSearchThenTheReadWorkerReads) {
+  // With no track to read for, the read worker searches beside the search worker: two
+  // cameras' full frames per frame set instead of one. Once tracking, it takes only reads.
+  Drive drive;
+  DriveSpotter critical(rig, map, drive), search(rig, map, drive), reads(rig, map, drive);
+  PipelineOptions options;
+  options.realtime.background_search = true;
+  options.realtime.background_reads = true;
+  Pipeline pipeline(rig, map, options, &critical, {&search, &reads});
+  std::vector<FrameResult> results;
+  std::vector<int> read_worker_full_frames;  // after each frame set
+  for (int k = 0; k < 30; ++k) {
+    results.push_back(pipeline.process(driveImages(rig, k, frame(drive, k))));
+    read_worker_full_frames.push_back(reads.full_frames);
+  }
+  EXPECT_EQ(critical.full_frames, 0);
+  EXPECT_GT(search.full_frames, 0);
+  ASSERT_EQ(results[0].background_cameras.size(), 2u);
+  EXPECT_NE(results[0].background_cameras[0], results[0].background_cameras[1]);
+  EXPECT_GT(read_worker_full_frames[1], 0);  // frame set 1 waited for both workers
+  std::optional<int> first_tracked;
+  for (int k = 0; k < 30; ++k) {
+    if (!results[k].has_pose) continue;
+    EXPECT_LT(positionError(results[k], drive.truth(k / kFrameRate)), 0.01) << k;
+    if (results[k].status != TrackingStatus::kOk) continue;
+    if (!first_tracked) first_tracked = k;
+    // A tracked frame set hands over at most one sweep camera, to the search worker, and the
+    // read worker reads.
+    EXPECT_LE(results[k].background_cameras.size(), 1u) << k;
+    EXPECT_EQ(read_worker_full_frames[k], read_worker_full_frames[*first_tracked]) << k;
+  }
+  ASSERT_TRUE(first_tracked);
+  EXPECT_GT(reads.reads, 0);
+  EXPECT_TRUE(results[1].has_pose);  // the texts of frame set 0's two cameras, fused in 1
+}
+
+// Counts the full frames it is given, and the cameras they were for.
+class CountingSpotter : public ocr::TextSpotter {
+ public:
+  std::string name() const override { return "counting"; }
+  std::vector<ocr::TextInstance> spot(const cv::Mat& image,
+                                      const ocr::SpotRequest& request) override {
+    if (request.regions.empty() && request.camera && image.cols == request.camera->model.width)
+      ++full_frames;
+    return {};
+  }
+  std::atomic<int> full_frames{0};
+};
+
+TEST_F(PipelineTest, WarmingUpSpotsEveryCameraOnEverySpotterBeforeTheFirstFrameSet) {
+  CountingSpotter critical, search, reads, cold;
+  PipelineOptions options;
+  options.realtime.background_search = true;
+  options.realtime.background_reads = true;
+  options.realtime.warm_up = true;
+  {
+    Pipeline pipeline(rig, map, options, &critical, {&search, &reads});
+    const int cameras = static_cast<int>(rig.cameras.size());
+    EXPECT_EQ(critical.full_frames, cameras);
+    EXPECT_EQ(search.full_frames, cameras);
+    EXPECT_EQ(reads.full_frames, cameras);
+  }
+  options.realtime.warm_up = false;
+  Pipeline pipeline(rig, map, options, &cold);
+  EXPECT_EQ(cold.full_frames, 0);
+}
+
 TEST(CaptureTime, TheVehicleMovesAlongAnArc) {
   OdometrySample motion;
   motion.speed = 2.0;

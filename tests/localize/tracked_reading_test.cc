@@ -143,5 +143,34 @@ TEST(TrackedReading, OffReadsEveryRegion) {
   }
 }
 
+
+TEST(TrackedReading, APlanWithoutReadsLeavesItsTextsDueForTheNextPlan) {
+  // The read worker busy (no_reads): the texts due a read are only fitted if read lately,
+  // and the next plan reads them as if this one had not happened.
+  const geometry::Rig rig = geometry::defaultRig();
+  const map::HdMap map = testing::aisleMap();
+  const FloorHeights floors(map);
+  ReadingOptions options;
+  options.reread_interval_frames = 10;
+  options.max_reads_per_frame = 2;
+  options.full_frame_interval = 1000;
+  PoseEkf ekf;
+  ekf.initialise(geometry::Pose2(0.0, 0.1, 0.0), Eigen::Matrix3d::Identity() * 1e-4, 0.0);
+  const LevelEstimate level(map, LevelOptions{}, "");
+  const auto reads = [](const ReadPlan& plan) {
+    int n = 0;
+    for (const auto& camera : plan.regions)
+      for (const auto& r : camera) n += r.roi.read;
+    return n;
+  };
+  ReadPlanner busy(rig, rig, map, floors, options, true), free(rig, rig, map, floors, options, true);
+  const ReadPlan without = busy.plan(true, ekf, level, std::nullopt, false, /*no_reads=*/true);
+  EXPECT_EQ(reads(without), 0);
+  const ReadPlan first = free.plan(true, ekf, level);
+  ASSERT_EQ(reads(first), 2);
+  const ReadPlan after = busy.plan(true, ekf, level);
+  EXPECT_EQ(reads(after), reads(first));
+}
+
 }  // namespace
 }  // namespace parkloc::localize

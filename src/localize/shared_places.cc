@@ -2,28 +2,48 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace parkloc::localize {
 namespace {
 
-// Reading directions this close (cosine of 20 degrees) are one direction.
-constexpr double kSameDirectionCos = 0.94;
+// Reading directions within 20 degrees are one direction.
+constexpr double kSameDirectionRad = 20.0 * M_PI / 180.0;
 // Sizes this close (share of the larger) are one size: the sizes of one text in a map differ by
 // its survey, not by its font.
 constexpr double kSameSizeShare = 0.10;
+// A map that states its accuracy is a survey whose sizes are the nominal painted ones, each off
+// by some per cent (pose_solver.h, SolverOptions::map_size_sigma): two of them differ by up to
+// three sigmas of their difference.
+constexpr double kSurveyedSizeSigma = 0.05;
+// Two surveys of one place differ by N(0, sa^2 + sb^2) per axis; 99 % of such horizontal
+// differences lie within 3.03 sigmas (the Rayleigh distribution's 99th percentile).
+constexpr double kSamePlaceSigmas = 3.03;
+
+double squared(const std::optional<double>& sigma) { return sigma ? *sigma * *sigma : 0.0; }
 
 }  // namespace
 
 bool samePlace(const map::Landmark& a, const map::Landmark& b, double tolerance_m) {
   if (a.surface != b.surface) return false;
-  if ((a.position.head<2>() - b.position.head<2>()).norm() > tolerance_m) return false;
-  return a.readingDirection().head<2>().dot(b.readingDirection().head<2>()) >= kSameDirectionCos;
+  // Where the map states its landmarks' survey error, one place surveyed on two levels may
+  // differ by that much: the tolerance grows to what the errors allow.
+  const double position_sigma =
+      std::sqrt(squared(a.accuracy.position_sigma) + squared(b.accuracy.position_sigma));
+  const double within = std::max(tolerance_m, kSamePlaceSigmas * position_sigma);
+  if ((a.position.head<2>() - b.position.head<2>()).norm() > within) return false;
+  const double heading_sigma =
+      std::sqrt(squared(a.accuracy.heading_sigma) + squared(b.accuracy.heading_sigma));
+  const double cos_within = std::cos(std::min(M_PI / 2, kSameDirectionRad + 3.0 * heading_sigma));
+  return a.readingDirection().head<2>().dot(b.readingDirection().head<2>()) >= cos_within;
 }
 
 bool interchangeable(const map::Landmark& a, const map::Landmark& b, double tolerance_m) {
-  const auto close = [](double u, double v) {
-    return std::abs(u - v) <= kSameSizeShare * std::max(u, v);
-  };
+  const bool surveyed = a.accuracy.position_sigma || b.accuracy.position_sigma;
+  const double share =
+      surveyed ? std::max(kSameSizeShare, 3.0 * std::sqrt(2.0) * kSurveyedSizeSigma)
+               : kSameSizeShare;
+  const auto close = [&](double u, double v) { return std::abs(u - v) <= share * std::max(u, v); };
   return samePlace(a, b, tolerance_m) && close(a.width, b.width) && close(a.height, b.height);
 }
 

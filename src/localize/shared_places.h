@@ -14,12 +14,14 @@ namespace parkloc::localize {
 
 // Whether two landmarks are at one place: on the same kind of surface, centres within
 // `tolerance_m` in x-y and reading directions within 20 degrees (a pillar's four faces are
-// four places).
+// four places); where the map states their survey error (Landmark::accuracy), within what
+// that error allows (3 sigmas of the difference) when it is more.
 bool samePlace(const map::Landmark& a, const map::Landmark& b, double tolerance_m);
 
-// Whether two landmarks at one place also agree in size (width and height within 10 %): only
-// then do their corners fix the pose alike (one level's numbers may be painted in a narrower
-// font than another's at the same place).
+// Whether two landmarks at one place also agree in size (width and height within 10 %, 21 %
+// where the map states an accuracy: a survey's sizes are nominal, 5 % each): only then do
+// their corners fix the pose alike (one level's numbers may be painted in a narrower font than
+// another's at the same place).
 bool interchangeable(const map::Landmark& a, const map::Landmark& b, double tolerance_m);
 
 // One landmark per interchangeable group with one text: the one on `preferred` level (else the

@@ -230,5 +230,25 @@ TEST(SharedPlacesTest, APlaceAsksForTheTextOfEveryLevel) {
   EXPECT_EQ(pillar->texts, (std::vector<std::string>{"A-1", "B1"}));
 }
 
+
+TEST(SharedPlacesTest, ASurveyedPlaceIsOnePlaceWithinWhatItsErrorAllows) {
+  // 117 on each level 40 cm and 4 degrees apart and 15 % apart in width: one place for a map
+  // that says its positions are known to 10 cm and headings to 2 degrees (40 cm is 2.8 sigmas
+  // of the difference, 4 degrees 1.4), another place for a map that says nothing (exact:
+  // 0.3 m, 20 degrees and 10 % are the tolerances then); 1 m apart is two places either way.
+  map::Landmark b1 = landmark("117", "B1", 0.0), b2 = landmark("117", "B2", 0.25);
+  b2.heading = 4.0 * M_PI / 180.0;
+  b2.width = 0.9 * 1.15;
+  EXPECT_TRUE(samePlace(b1, b2, 0.3));
+  EXPECT_FALSE(interchangeable(b1, b2, 0.3));  // 15 % in width: another font
+  b2.position.x() = 0.40;
+  EXPECT_FALSE(samePlace(b1, b2, 0.3));
+  for (map::Landmark* l : {&b1, &b2}) l->accuracy = {0.10, 2.0 * M_PI / 180.0};
+  EXPECT_TRUE(samePlace(b1, b2, 0.3));
+  EXPECT_TRUE(interchangeable(b1, b2, 0.3));  // a survey's nominal sizes
+  b2.position.x() = 1.0;
+  EXPECT_FALSE(samePlace(b1, b2, 0.3));
+}
+
 }  // namespace
 }  // namespace parkloc::localize

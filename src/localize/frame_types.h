@@ -142,6 +142,14 @@ struct FrameResult {
   bool solver_converged = false;
   int solver_iterations = 0;
   bool reinitialised = false;  // the filter was reset from the solver this frame
+  // The filter's odometry error estimates with the pose (pose_ekf.h): the yaw-rate bias
+  // (rad/s) and the speed scale, each with its 1 sigma. A wrong bias turns the heading while
+  // the filter dead-reckons between fixes.
+  struct OdometryEstimate {
+    double yaw_rate_bias = 0.0, yaw_rate_bias_sigma = 0.0;
+    double speed_scale = 1.0, speed_scale_sigma = 0.0;
+  };
+  std::optional<OdometryEstimate> odometry;
   // The pose rests on a single landmark's reading, not yet confirmed by a second one read
   // consistently with it (track_lifecycle.h): it may come from one misreading.
   bool tentative = false;

@@ -26,6 +26,11 @@ std::string frameResultToJson(const localize::FrameResult& r) {
     j["pose"] = poseJson(r.pose);
     j["covariance"] = matrixJson(r.covariance);
   }
+  if (r.odometry)
+    j["odometry_estimate"] = {{"yaw_rate_bias", r.odometry->yaw_rate_bias},
+                              {"yaw_rate_bias_sigma", r.odometry->yaw_rate_bias_sigma},
+                              {"speed_scale", r.odometry->speed_scale},
+                              {"speed_scale_sigma", r.odometry->speed_scale_sigma}};
   if (r.measurement) j["measurement"] = poseJson(*r.measurement);
   if (r.measurement_covariance) j["measurement_covariance"] = matrixJson(*r.measurement_covariance);
   j["solver"] = {{"converged", r.solver_converged}, {"iterations", r.solver_iterations}};

@@ -56,6 +56,7 @@ class TrackLifecycleTest : public ::testing::Test {
 TEST_F(TrackLifecycleTest, TheFirstFixStartsTheFilterAndLaterFixesUpdateIt) {
   FrameResult r = apply({}, 0.0);
   EXPECT_FALSE(r.has_pose);
+  EXPECT_FALSE(r.odometry);
   EXPECT_EQ(r.status, TrackingStatus::kNotInitialised);
   r = apply(agreeing({1.0, 2.0, 0.3}), 0.1);
   EXPECT_TRUE(r.reinitialised);
@@ -66,6 +67,12 @@ TEST_F(TrackLifecycleTest, TheFirstFixStartsTheFilterAndLaterFixesUpdateIt) {
   EXPECT_EQ(r.status, TrackingStatus::kOk);
   r = apply({}, 0.3);
   EXPECT_EQ(r.status, TrackingStatus::kDeadReckoning);
+  // Every pose comes with the filter's odometry estimates: at their priors here.
+  ASSERT_TRUE(r.odometry);
+  EXPECT_EQ(r.odometry->yaw_rate_bias, ekf.yawRateBias());
+  EXPECT_EQ(r.odometry->speed_scale, ekf.speedScale());
+  EXPECT_NEAR(r.odometry->yaw_rate_bias_sigma, std::sqrt(ekf.fullCovariance()(3, 3)), 1e-15);
+  EXPECT_GT(r.odometry->speed_scale_sigma, 0.0);
 }
 
 TEST_F(TrackLifecycleTest, AFilterWhoseUncertaintyGrewPastTheLimitIsLost) {

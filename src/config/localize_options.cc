@@ -21,6 +21,8 @@ void describe(OptionVisitor& v, localize::EkfOptions& o) {
           "prior of the gyro's yaw-rate bias, a filter state, rad/s");
   v.value("yaw_rate_bias_walk", o.yaw_rate_bias_walk,
           "random walk of that bias, rad/s/sqrt(s): it drifts with temperature");
+  v.value("odometry_learning_delay_s", o.odometry_learning_delay_s,
+          "fixes teach the bias and scale only this long after the filter starts (0: at once)");
   v.value("speed_scale_sigma", o.speed_scale_sigma,
           "prior of the speed scale (wheel radius error) around 1, a filter state");
   v.value("speed_scale_walk", o.speed_scale_walk, "random walk of the speed scale, 1/sqrt(s)");

@@ -38,6 +38,7 @@ void PoseEkf::initialise(const geometry::Pose2& pose, const Eigen::Matrix3d& cov
   covariance_.topLeftCorner<3, 3>() = covariance;
   covariance_.bottomRightCorner<2, 2>() = odometry;
   time_ = time;
+  started_ = time;
   initialised_ = true;
   clearMapErrors();
 }
@@ -118,7 +119,8 @@ void PoseEkf::update(const geometry::Pose2& fix, const Eigen::Matrix3d& R) {
   // H = [I 0]: P H^T is the first three columns of P, H P H^T its top-left block.
   const Eigen::Vector3d nu = innovation(fix, pose_);
   const Eigen::Matrix3d S = covariance() + R;
-  const Eigen::Matrix<double, kStateSize, 3> K = covariance_.leftCols<3>() * S.inverse();
+  Eigen::Matrix<double, kStateSize, 3> K = covariance_.leftCols<3>() * S.inverse();
+  if (time_ - started_ < options_.odometry_learning_delay_s) K.bottomRows<2>().setZero();
   const StateVector dx = K * nu;
   pose_ = geometry::Pose2(pose_.x + dx(0), pose_.y + dx(1), pose_.yaw + dx(2));
   bias_ += dx(kBias);

@@ -145,6 +145,32 @@ TEST(PoseEkf, OdometryErrorsConvergeFromPoseFixes) {
   EXPECT_GE(fractionInside(d.nees, kNeesBound), 0.9);
 }
 
+TEST(PoseEkf, DuringTheLearningDelayFixesMoveThePoseButNotTheOdometryEstimates) {
+  // A vehicle standing still whose gyro reads a bias of 0.02 rad/s, a fix of its true pose
+  // every 0.1 s. With odometry_learning_delay_s = 1 the bias estimate keeps its prior for the
+  // first second (the consider update) while the fixes hold the heading, then learns it.
+  EkfOptions options;
+  options.odometry_learning_delay_s = 1.0;
+  PoseEkf ekf(options);
+  const Eigen::Matrix3d R = Eigen::Vector3d(1e-4, 1e-4, 1e-5).asDiagonal();
+  ekf.initialise(geometry::Pose2(), R, 0.0);
+  double bias_at_delay = 0.0, variance_at_delay = 0.0;
+  for (int k = 1; k <= 50; ++k) {
+    for (int i = 0; i < 5; ++i) ekf.predictWithOdometry(0.0, 0.02, 0.02);
+    ekf.setTime(0.1 * k);
+    ekf.update(geometry::Pose2(), R);
+    EXPECT_LT(std::abs(ekf.pose().yaw), 0.002 + 3.0 * std::sqrt(ekf.covariance()(2, 2))) << k;
+    if (k == 9) {
+      bias_at_delay = ekf.yawRateBias();
+      variance_at_delay = ekf.yawRateBiasVariance();
+    }
+  }
+  EXPECT_EQ(bias_at_delay, 0.0);
+  EXPECT_GE(variance_at_delay, options.yaw_rate_bias_sigma * options.yaw_rate_bias_sigma);
+  EXPECT_NEAR(ekf.yawRateBias(), 0.02, 0.005);
+  EXPECT_LT(ekf.yawRateBiasVariance(), 0.1 * variance_at_delay);
+}
+
 TEST(PoseEkf, WithoutTheOdometryStatesTheSameDriveIsOverconfident) {
   // The same drive with bias and scale fixed (prior and walk 0): the odometry errors are
   // noise the filter does not know of, and most fix frames fall outside the bound.

@@ -212,7 +212,7 @@ void describe(OptionVisitor& v, localize::RealtimeOptions& o) {
           "the reads at predicted places on a worker of their own, fused at their capture "
           "time; the frame set keeps the ink fits of texts read lately");
   v.value("warm_up", o.warm_up,
-          "every spotter spots a blank full frame of each camera at start (the first "
+          "every spotter reads a made-up full frame of each camera at start (the first "
           "inference costs 2-3 times a later one)");
 }
 

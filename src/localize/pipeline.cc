@@ -4,6 +4,7 @@
 #include <iterator>
 
 #include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
 
 #include "localize/capture_time.h"
 #include "localize/floor_heights.h"
@@ -100,8 +101,20 @@ struct Pipeline::Impl {
     reset();
   }
 
-  // Every spotter spots a blank full frame of each camera as the search would, the workers
-  // on their threads while the critical path's spotter does the same here.
+  // A grey frame with large dark text across it: the detector finds boxes, so the recognizer
+  // and the classifier run their first inference too.
+  static cv::Mat warmUpImage(int width, int height) {
+    cv::Mat image(height, width, CV_8UC3, cv::Scalar::all(150));
+    const double scale = std::max(1.0, height / 160.0);
+    for (int row = 1; row <= 3; ++row)
+      cv::putText(image, "A123 B456", cv::Point(width / 10, row * height / 4),
+                  cv::FONT_HERSHEY_SIMPLEX, scale, cv::Scalar::all(20),
+                  std::max(2, static_cast<int>(scale * 2)));
+    return image;
+  }
+
+  // Every spotter spots a full frame of each camera as the search would, the workers on their
+  // threads while the critical path's spotter does the same here.
   void warmUp() {
     ReadPlan plan;
     plan.choice.full_frame.assign(nominal_rig.cameras.size(), true);
@@ -112,7 +125,7 @@ struct Pipeline::Impl {
       const auto& model = nominal_rig.cameras[c].model;
       if (model.width <= 0 || model.height <= 0) continue;
       job.cameras.push_back(c);
-      job.images.emplace_back(model.height, model.width, CV_8UC3, cv::Scalar::all(128));
+      job.images.push_back(warmUpImage(model.width, model.height));
       job.requests.push_back(reading.request(c, plan, geometry::Pose2()));
     }
     for (Lane* lane : {&search_lane, &read_lane})
@@ -122,7 +135,7 @@ struct Pipeline::Impl {
         try {
           spotter->spot(job.images[k], job.requests[k]);
         } catch (const std::exception&) {
-          // A spotter that fails on a blank frame will say so on the first real one.
+          // A spotter that fails on the made-up frame will say so on the first real one.
         }
       }
     for (Lane* lane : {&search_lane, &read_lane})

@@ -50,8 +50,9 @@ struct RealtimeOptions {
   // worker takes full frames beside the search worker, other cameras of the turn. false, or
   // without that spotter: the reads stay inside the frame set.
   bool background_reads = false;
-  // At construction every spotter (the critical path's and the workers') spots a blank full
-  // frame of each camera, as a vehicle would before it drives off: the first inference of
+  // At construction every spotter (the critical path's and the workers') reads a made-up full
+  // frame of each camera (large dark text on grey, so that the detector, the recognizer and
+  // the classifier all run), as a vehicle would before it drives off: the first inference of
   // an engine allocates its buffers and costs 2-3 times a later one, which would otherwise
   // fall on the first frame sets, the search for the first fix.
   bool warm_up = false;

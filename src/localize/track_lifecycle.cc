@@ -148,10 +148,9 @@ void TrackLifecycle::report(const PoseEkf& ekf, FrameResult& result) const {
   result.has_pose = true;
   result.pose = ekf.pose();
   result.covariance = ekf.covariance();
-  const auto& state = ekf.fullCovariance();
   result.odometry = FrameResult::OdometryEstimate{
-      ekf.yawRateBias(), std::sqrt(std::max(0.0, state(3, 3))), ekf.speedScale(),
-      std::sqrt(std::max(0.0, state(4, 4)))};
+      ekf.yawRateBias(), std::sqrt(std::max(0.0, ekf.yawRateBiasVariance())), ekf.speedScale(),
+      std::sqrt(std::max(0.0, ekf.speedScaleVariance()))};
   result.tentative = tentative_;
   if (result.status != TrackingStatus::kOk)
     result.status =

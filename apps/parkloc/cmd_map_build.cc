@@ -35,6 +35,7 @@ struct MapBuildArgs {
   bool similarity = false;
   std::string merge;
   std::string sightings;
+  std::string numbering;
   bool quiet = false;
   ConfigArgs config;
 };
@@ -49,7 +50,8 @@ void writeText(const std::string& path, const std::string& text) {
 }
 
 void run(const MapBuildArgs& a) {
-  const config::Config config = a.config.load();
+  config::Config config = a.config.load();
+  if (!a.numbering.empty()) config.map_build.reading.formats = a.numbering;
   // Read everything that can fail on bad input before the long reading starts.
   std::vector<io::Anchor> anchors;
   if (!a.anchors.empty()) anchors = io::loadAnchors(a.anchors);
@@ -156,6 +158,16 @@ void run(const MapBuildArgs& a) {
                                         frame_sets ? 1000.0 * reading_s / frame_sets : 0.0)
                           : "from " + a.sightings,
       e.seconds, e.iterations, e.corner_factors, e.odometry_factors);
+  if (!build.numbering.empty()) {
+    std::vector<std::string> formats;
+    for (const auto& f : build.numbering) {
+      const std::vector<std::string> span = mapping::numberingLexicon({f});
+      formats.push_back(f.support ? fmt::format("{} ({} to {}, from {} numbers)", f.pattern,
+                                                span.front(), span.back(), f.support)
+                                  : f.pattern + " (given)");
+    }
+    fmt::print("  read against the numbering {}\n", fmt::join(formats, ", "));
+  }
   if (!build.inconsistent.empty())
     fmt::print("  left out, corners fit no floor text: {}\n", fmt::join(build.inconsistent, ", "));
   for (const std::string& p : build.problems) fmt::print("  problem: {}\n", p);
@@ -187,6 +199,9 @@ CLI::App* addMapBuild(CLI::App& map) {
   cmd->add_option("--sightings", args->sightings,
                   "Sightings an earlier build of the same drives wrote (MAP.sightings.jsonl): "
                   "estimate again without reading the images");
+  cmd->add_option("--numbering", args->numbering,
+                  "The garage's numbering formats, comma-separated, '#' for a digit (e.g. "
+                  "C###,K2-###): read against them besides those the build learns");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   args->config.addTo(cmd);
   cmd->callback([args] { run(*args); });

@@ -1,5 +1,6 @@
 #include "eval/map_comparison.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "eval/ocr_metrics.h"
@@ -42,7 +43,33 @@ MapComparison compareMaps(const map::HdMap& built, const map::HdMap& truth,
     else
       out.phantoms.push_back(b.text);
   }
+  // The alignment starts from the pair of matches that most others agree with (every pair is
+  // tried: a map has tens of texts): one landmark at a wrong place must not pull the first fit
+  // so far that no landmark is within reach of its true place.
+  const auto agreeingWith = [&](const geometry::PlanarFit& fit) {
+    std::vector<bool> in(matches.size());
+    for (size_t m = 0; m < matches.size(); ++m)
+      in[m] = (fit.apply(matches[m].first->position.head<2>()) -
+               matches[m].second->position.head<2>())
+                  .norm() <= options.wrong_place_m;
+    return in;
+  };
   std::vector<bool> inlier(matches.size(), true);
+  size_t most = 0;
+  for (size_t i = 0; i < matches.size(); ++i)
+    for (size_t j = i + 1; j < matches.size(); ++j) {
+      const auto pair = geometry::fitPlanar(
+          {matches[i].first->position.head<2>(), matches[j].first->position.head<2>()},
+          {matches[i].second->position.head<2>(), matches[j].second->position.head<2>()},
+          /*with_scale=*/false);
+      if (!pair) continue;
+      const std::vector<bool> in = agreeingWith(*pair);
+      const auto count = static_cast<size_t>(std::count(in.begin(), in.end(), true));
+      if (count > most) {
+        most = count;
+        inlier = in;
+      }
+    }
   for (int round = 0; round < 3; ++round) {
     std::vector<Eigen::Vector2d> from, to;
     for (size_t m = 0; m < matches.size(); ++m)
@@ -52,15 +79,9 @@ MapComparison compareMaps(const map::HdMap& built, const map::HdMap& truth,
       }
     out.fit = geometry::fitPlanar(from, to, /*with_scale=*/false);
     if (!out.fit) break;
-    bool changed = false;
-    for (size_t m = 0; m < matches.size(); ++m) {
-      const bool in = (out.fit->apply(matches[m].first->position.head<2>()) -
-                       matches[m].second->position.head<2>())
-                          .norm() <= options.wrong_place_m;
-      changed |= in != inlier[m];
-      inlier[m] = in;
-    }
-    if (!changed) break;
+    const std::vector<bool> in = agreeingWith(*out.fit);
+    if (in == inlier) break;
+    inlier = in;
   }
   std::vector<double> position, heading, width, height;
   std::set<std::string> found_ids;

@@ -28,6 +28,8 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
                       {"text_instances", d.reading.instances},
                       {"sightings", d.sightings},
                       {"reading_s", d.reading.seconds},
+                      {"survey_frame_sets", d.reading.survey_frame_sets},
+                      {"survey_reading_s", d.reading.survey_seconds},
                       {"reading_ms_per_frame_set", per_frame},
                       {"odometry_distance_m", d.odometry_distance_m},
                       {"estimated_distance_m", d.estimated_distance_m}});
@@ -62,8 +64,17 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
     for (const DriveOutcome& d : build.drives) frames += d.estimated.size();
     return frames ? 1000.0 * e.seconds / static_cast<double>(frames) : 0.0;
   }();
+  nlohmann::json numbering = nlohmann::json::array();
+  for (const NumberingFormat& f : build.numbering) {
+    const std::vector<std::string> span = numberingLexicon({f});
+    numbering.push_back({{"format", f.pattern},
+                         {"numbers", f.support},
+                         {"from", span.front()},
+                         {"to", span.back()}});
+  }
   return {{"level", level},
           {"drives", drives},
+          {"numbering", numbering},
           {"consensus",
            {{"landmarks", build.landmarks.size()},
             {"unplaced_sightings", build.consensus.unplaced},

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -54,6 +55,44 @@ void joinFrame(std::vector<SurveyPoses>& poses, size_t drive,
         "drive {}: shares {} text(s) with the drives before it, 2 are needed to join their map",
         name, from.size()));
   for (geometry::Pose2& p : poses[drive].map_from_vehicle) p = fit->to_from_from * p;
+}
+
+// The formats the user gives (ReadingOptions::formats); InputError for one that is none.
+std::vector<NumberingFormat> givenNumbering(const ReadingOptions& options) {
+  std::vector<NumberingFormat> formats;
+  std::string rest = options.formats;
+  while (!rest.empty()) {
+    const size_t comma = rest.find(',');
+    const std::string pattern = rest.substr(0, comma);
+    rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
+    if (!validNumbering(pattern, options.numbering.max_strings))
+      throw InputError(fmt::format(
+          "numbering format '{}': expected characters and '#' for each open digit, spanning at "
+          "most {} numbers (e.g. C### or K2-###)",
+          pattern, options.numbering.max_strings));
+    formats.push_back({pattern, 0});
+  }
+  return formats;
+}
+
+// The formats of the numbers that a first reading of one drive agreed on.
+std::vector<NumberingFormat> learntNumbering(const std::vector<Sighting>& first,
+                                             const geometry::Rig* rig, const SurveyPoses& poses,
+                                             const MapBuildOptions& options) {
+  // The drive is alone here: its sightings refer to drive 0 of a one-drive frame.
+  std::vector<Sighting> own = first;
+  for (Sighting& s : own) s.drive = 0;
+  const Consensus agreed = formConsensus(own, castAll(own, {rig}, {poses}), options.consensus);
+  std::vector<std::string> numbers;
+  for (const TextTrack& t : agreed.tracks) numbers.push_back(t.text);
+  return learnNumbering(numbers, options.reading.numbering);
+}
+
+void addFormats(std::vector<NumberingFormat>& formats, const std::vector<NumberingFormat>& more) {
+  for (const NumberingFormat& f : more)
+    if (std::none_of(formats.begin(), formats.end(),
+                     [&](const NumberingFormat& g) { return g.pattern == f.pattern; }))
+      formats.push_back(f);
 }
 
 }  // namespace
@@ -144,6 +183,7 @@ MapBuild buildMap(const std::vector<const io::Sequence*>& drives, ocr::TextSpott
   std::vector<SurveyPoses> poses;
   std::vector<Sighting> sightings;
   std::vector<ReadingStats> stats(drives.size());
+  std::vector<NumberingFormat> numbering = givenNumbering(options.reading);
   for (size_t d = 0; d < drives.size(); ++d) {
     const io::Sequence& drive = *drives[d];
     rigs.push_back(&drive.rig());
@@ -161,10 +201,20 @@ MapBuild buildMap(const std::vector<const io::Sequence*>& drives, ocr::TextSpott
         read.push_back(s);
       }
     } else if (spotter) {
-      read =
-          readDrive(drive, d, *spotter, options.reading, stats[d], [&](size_t done, size_t total) {
-            if (progress) progress(d, done, total);
-          });
+      const auto tell = [&](size_t done, size_t total) {
+        if (progress) progress(d, done, total);
+      };
+      if (options.reading.numbering.learn) {
+        ReadingStats survey;
+        const std::vector<Sighting> first =
+            readDrive(drive, d, *spotter, options.reading.numbering.survey_step, {},
+                      options.reading, survey, tell);
+        stats[d].survey_frame_sets = survey.frame_sets;
+        stats[d].survey_seconds = stats[d].seconds = survey.seconds;
+        addFormats(numbering, learntNumbering(first, rigs[d], poses[d], options));
+      }
+      read = readDrive(drive, d, *spotter, options.reading.frame_step, numberingLexicon(numbering),
+                       options.reading, stats[d], tell);
     }
     if (read.empty())
       throw InputError(fmt::format("drive {}: no parking number was read in {} frame sets",
@@ -173,6 +223,7 @@ MapBuild buildMap(const std::vector<const io::Sequence*>& drives, ocr::TextSpott
     if (d > 0) joinFrame(poses, d, rigs, sightings, options.consensus, drive.dir());
   }
   MapBuild build = estimateMap(rigs, poses, sightings, options);
+  build.numbering = std::move(numbering);
   for (size_t d = 0; d < drives.size(); ++d) {
     build.drives[d].dir = drives[d]->dir();
     build.drives[d].reading = stats[d];

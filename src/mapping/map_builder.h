@@ -51,6 +51,8 @@ struct MapBuild {
   std::vector<std::string> inconsistent;  // left out by MapBuildOptions::max_rms_px
   EstimationSummary estimation;
   bool has_uncertainty = false;
+  // The numbering formats the drives were read against (given, then learnt).
+  std::vector<NumberingFormat> numbering;
   // What the build could not do or doubts, one line each (empty: nothing).
   std::vector<std::string> problems;
 };

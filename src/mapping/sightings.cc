@@ -5,13 +5,14 @@
 namespace parkloc::mapping {
 
 std::vector<Sighting> readDrive(const io::Sequence& drive, size_t drive_index,
-                                ocr::TextSpotter& spotter, const ReadingOptions& options,
-                                ReadingStats& stats,
+                                ocr::TextSpotter& spotter, int frame_step,
+                                const std::vector<std::string>& lexicon,
+                                const ReadingOptions& options, ReadingStats& stats,
                                 const std::function<void(size_t, size_t)>& progress) {
   const auto started = std::chrono::steady_clock::now();
   std::vector<Sighting> sightings;
   const geometry::Rig& rig = drive.rig();
-  const size_t step = static_cast<size_t>(std::max(1, options.frame_step));
+  const size_t step = static_cast<size_t>(std::max(1, frame_step));
   const size_t frames = drive.timestamps().size();
   for (size_t frame = 0; frame < frames; frame += step) {
     ++stats.frame_sets;
@@ -22,10 +23,12 @@ std::vector<Sighting> readDrive(const io::Sequence& drive, size_t drive_index,
         continue;
       }
       ++stats.images;
-      // No lexicon and no placed texts: free reading of whatever the full frame shows; the
-      // camera lets the engine look for floor text in its bird's-eye view of the floor.
+      // No map and no placed texts: whatever the full frame shows, read freely or against
+      // the numbering's strings; the camera lets the engine look for floor text in its
+      // bird's-eye view of the floor.
       ocr::SpotRequest request;
       request.camera = &rig.cameras[c];
+      request.lexicon = lexicon;
       for (const ocr::TextInstance& instance : spotter.spot(image, request)) {
         ++stats.instances;
         // Parking numbers only: their corners lie on the floor, the plane the vehicle drives

@@ -10,6 +10,7 @@
 
 #include "io/sequence.h"
 #include "map/landmark.h"
+#include "mapping/numbering_format.h"
 #include "ocr/text_spotter.h"
 
 namespace parkloc::mapping {
@@ -31,6 +32,10 @@ struct ReadingOptions {
   // A reading less probable than this (the recognizer's calibrated score) is no sighting: it
   // would only be outvoted in the consensus.
   double min_recognition_score = 0.5;
+  // The numbering formats the drive is read against (numbering_format.h) ...
+  NumberingOptions numbering;
+  // ... and those the user knows, comma-separated ("C###,K2-###"; empty: none).
+  std::string formats;
 };
 
 struct ReadingStats {
@@ -38,14 +43,20 @@ struct ReadingStats {
   size_t images = 0;      // camera images spotted
   size_t missing_images = 0;
   size_t instances = 0;  // text instances the spotter returned
-  double seconds = 0.0;  // wall time of the spotting
+  double seconds = 0.0;  // wall time of the spotting, both readings
+  // The first, free reading that learns the numbering (NumberingOptions::learn).
+  size_t survey_frame_sets = 0;
+  double survey_seconds = 0.0;
 };
 
-// Sightings of parking numbers (painted on the floor) in `drive`. `progress` (may be empty)
-// is told (done, total) frame sets.
+// Sightings of parking numbers (painted on the floor) in `drive`, every `frame_step`-th frame
+// set; `lexicon` (may be empty: free reading) is what the spotter reads against, the strings
+// of the garage's numbering formats. `progress` (may be empty) is told (done, total) frame
+// sets.
 std::vector<Sighting> readDrive(const io::Sequence& drive, size_t drive_index,
-                                ocr::TextSpotter& spotter, const ReadingOptions& options,
-                                ReadingStats& stats,
+                                ocr::TextSpotter& spotter, int frame_step,
+                                const std::vector<std::string>& lexicon,
+                                const ReadingOptions& options, ReadingStats& stats,
                                 const std::function<void(size_t, size_t)>& progress = {});
 
 }  // namespace parkloc::mapping

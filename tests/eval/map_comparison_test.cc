@@ -74,5 +74,19 @@ TEST(MapComparison, CompletenessCountsOnlyWhatTheDriveShowedLegibly) {
   EXPECT_LT(c.position_m.max, 1e-9);
 }
 
+TEST(MapComparison, ALandmarkFarOffDoesNotPullTheAlignmentAway) {
+  // Two of three texts right, one 30 m off: a fit over all three puts none within 0.5 m of
+  // its true place; the alignment must follow the two that agree.
+  const map::HdMap truth = truthMap();
+  std::vector<map::Landmark> built = {number("N0", 0.0, 3.0), number("N1", 2.5, 3.0),
+                                      number("N2", 35.0, 3.0)};
+  const MapComparison c = compareMaps(map::HdMap(built), truth, "B1", /*legible_frames=*/{}, {});
+  ASSERT_TRUE(c.fit);
+  EXPECT_EQ(c.position_m.count, 2u);
+  EXPECT_LT(c.position_m.max, 1e-9);
+  ASSERT_EQ(c.phantoms.size(), 1u);
+  EXPECT_EQ(c.phantoms[0], "N2");
+}
+
 }  // namespace
 }  // namespace parkloc::eval

@@ -43,6 +43,8 @@ void printAccuracy(const parkloc::map::HdMap& map) {
   const parkloc::map::MapAccuracy& fallback = map.accuracy();
   fmt::print("  map-wide accuracy: position_sigma {}, heading_sigma {}\n",
              sigmaText(fallback.position_sigma, false), sigmaText(fallback.heading_sigma, true));
+  fmt::print("  complete: {}\n", map.complete() ? "yes, every text of the area it covers"
+                                                 : "no, it holds what was read (a built map)");
   for (const bool heading : {false, true}) {
     std::vector<double> own;
     for (const Landmark& l : map.landmarks()) {

@@ -127,7 +127,10 @@ void run(const MapBuildArgs& a) {
   }
   report["landmarks"] = mapping::buildReportJson(build, a.level)["landmarks"];
 
-  const map::HdMap built(std::move(landmarks), fs::path(a.out).stem().string());
+  // A built map holds what the drives read, not every number of the level; merged into an
+  // existing map, it is as complete as that map.
+  const map::HdMap built(std::move(landmarks), fs::path(a.out).stem().string(), {},
+                         existing ? existing->complete() : false);
   io::saveMap(built, a.out);
   for (size_t d = 0; d < build.drives.size(); ++d) {
     const std::string name = fs::path(a.drives[d]).filename().string();
@@ -161,7 +164,7 @@ void run(const MapBuildArgs& a) {
   if (!build.numbering.empty()) {
     std::vector<std::string> formats;
     for (const auto& f : build.numbering) {
-      const std::vector<std::string> span = mapping::numberingLexicon({f});
+      const std::vector<std::string> span = map::numberingLexicon({f});
       formats.push_back(f.support ? fmt::format("{} ({} to {}, from {} numbers)", f.pattern,
                                                 span.front(), span.back(), f.support)
                                   : f.pattern + " (given)");

@@ -1,5 +1,7 @@
 #include "config/localize_options.h"
 
+#include "config/numbering_options.h"
+
 namespace parkloc::config {
 namespace {
 
@@ -79,6 +81,10 @@ void describe(OptionVisitor& v, localize::ReadingOptions& o) {
           "placed texts looked for within this radius of a box");
   v.value("second_opinions", o.second_opinions,
           "ask the second recognizer on full frames (costs 30-50 ms at p99, moved no error)");
+  v.value("numbering_competitors", o.numbering_competitors,
+          "with a map not complete, full frames also read the numbers of its formats it lacks");
+  v.section("numbering", "how the map's numbering formats are learnt from its numbers",
+            [&] { describe(v, o.numbering); });
 }
 
 void describe(OptionVisitor& v, localize::LevelOptions& o) {

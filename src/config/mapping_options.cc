@@ -1,24 +1,19 @@
 #include "config/mapping_options.h"
 
+#include "config/numbering_options.h"
+
 namespace parkloc::config {
 namespace {
 
-void describe(OptionVisitor& v, mapping::NumberingOptions& o) {
-  v.value("learn", o.learn,
-          "learn the numbering formats from a first free reading, then read against them");
-  v.value("survey_step", o.survey_step, "the first reading reads every this many frame sets");
-  v.value("min_support", o.min_support, "a format is followed by at least this many numbers");
-  v.value("max_strings", o.max_strings,
-          "a format spans at most this many numbers (shared digits held from the left)");
-  v.value("range_margin", o.range_margin,
-          "a learnt format spans its agreed numbers' values and this much either side");
-}
 
 void describe(OptionVisitor& v, mapping::ReadingOptions& o) {
   v.value("frame_step", o.frame_step, "read every this many frame sets (1: all)");
   v.value("min_recognition_score", o.min_recognition_score,
           "a less probable reading is no sighting: it would only be outvoted");
-  v.section("numbering", "the garage's numbering formats, read against",
+  v.value("learn_numbering", o.learn_numbering,
+          "learn the numbering formats from a first free reading, then read against them");
+  v.value("survey_step", o.survey_step, "the first reading reads every this many frame sets");
+  v.section("numbering", "how formats are learnt from the numbers agreed on",
             [&] { describe(v, o.numbering); });
   v.value("formats", o.formats,
           "numbering formats the user knows, comma-separated, '#' a digit (e.g. C###,K2-###)");

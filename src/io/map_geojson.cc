@@ -139,6 +139,20 @@ map::MapAccuracy mapAccuracy(const json& doc, const std::string& source) {
   return a;
 }
 
+// The FeatureCollection's own "complete" (default true): whether the map holds every text of
+// the area it covers.
+bool mapComplete(const json& doc, const std::string& source) {
+  const auto props = doc.find("properties");
+  if (props == doc.end() || !props->is_object()) return true;
+  const auto it = props->find("complete");
+  if (it == props->end()) return true;
+  if (!it->is_boolean())
+    throw InputError(fmt::format("map {}: map-wide properties: 'complete': expected true or "
+                                 "false, got {}",
+                                 source, it->type_name()));
+  return it->get<bool>();
+}
+
 std::string stripJsonExceptionPrefix(const std::string& what) {
   // "[json.exception.parse_error.101] parse error at line 1, ..." -> "parse error at ..."
   const size_t close = what.find("] ");
@@ -182,7 +196,7 @@ map::HdMap parseMap(const std::string& geojson_text, const std::string& source_n
   // Remaining checks (parking number twice on a level, sizes, normals) are the map's own.
   if (const std::string problem = map::HdMap::validate(landmarks); !problem.empty())
     throw InputError(fmt::format("map {}: {}", source_name, problem));
-  return map::HdMap(std::move(landmarks), name, accuracy);
+  return map::HdMap(std::move(landmarks), name, accuracy, mapComplete(doc, source_name));
 }
 
 map::HdMap loadMap(const std::string& path) {
@@ -200,10 +214,11 @@ std::string mapToGeoJson(const map::HdMap& map) {
   if (!map.name().empty()) out += " \"name\": " + ordered(map.name()).dump() + ",\n";
   out += " \"crs\": \"local metric frame: metres, x east, y north, z up\",\n";
   const map::MapAccuracy& accuracy = map.accuracy();
-  if (accuracy.position_sigma || accuracy.heading_sigma) {
+  if (accuracy.position_sigma || accuracy.heading_sigma || !map.complete()) {
     ordered props = ordered::object();
     if (accuracy.position_sigma) props["position_sigma"] = *accuracy.position_sigma;
     if (accuracy.heading_sigma) props["heading_sigma"] = *accuracy.heading_sigma;
+    if (!map.complete()) props["complete"] = false;
     out += " \"properties\": " + props.dump() + ",\n";
   }
   out += " \"features\": [";

@@ -1,10 +1,29 @@
 #include "localize/read_planning.h"
 
 #include <algorithm>
+#include <set>
 
 #include "localize/shared_places.h"
+#include "map/numbering.h"
 
 namespace parkloc::localize {
+namespace {
+
+// `texts` and, for a map that does not hold every text of its area, the numbers of its
+// numbering formats that it lacks (ReadingOptions::numbering_competitors).
+std::vector<std::string> withCompetitors(std::vector<std::string> texts, const map::HdMap& map,
+                                         const ReadingOptions& options) {
+  if (!options.numbering_competitors || map.complete()) return texts;
+  std::vector<std::string> numbers;
+  for (const map::Landmark& l : map.landmarks())
+    if (l.cls == map::TextClass::kParkingNumber) numbers.push_back(l.text);
+  const std::set<std::string> known(texts.begin(), texts.end());
+  for (std::string& n : map::numberingLexicon(map::learnNumbering(numbers, options.numbering)))
+    if (!known.count(n)) texts.push_back(std::move(n));
+  return texts;
+}
+
+}  // namespace
 
 ReadPlanner::ReadPlanner(const geometry::Rig& rig, const geometry::Rig& calibrated_rig,
                          const map::HdMap& map, const FloorHeights& floors,
@@ -17,8 +36,8 @@ ReadPlanner::ReadPlanner(const geometry::Rig& rig, const geometry::Rig& calibrat
       schedule_(options, guided),
       // Every level's texts: the full frame is where the texts of another level (after a
       // ramp) and the level signs are read.
-      lexicon_(map::distinctTexts(map)),
-      floor_lexicon_(map::distinctTexts(map, /*floor_only=*/true)) {
+      lexicon_(withCompetitors(map::distinctTexts(map), map, options)),
+      floor_lexicon_(withCompetitors(map::distinctTexts(map, /*floor_only=*/true), map, options)) {
   roi_options_.margin_px = options.roi_margin_px;
   roi_options_.min_size_px = options.roi_min_size_px;
 }

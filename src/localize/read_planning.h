@@ -27,6 +27,7 @@
 #include "localize/region_budget.h"
 #include "localize/roi_prediction.h"
 #include "map/hd_map.h"
+#include "map/numbering.h"
 #include "map/placed_texts.h"
 #include "ocr/text_spotter.h"
 
@@ -122,6 +123,22 @@ struct ReadingOptions {
   // 30-50 ms at p95 and p99, and a second opinion can only confirm a tracked pose, never
   // start one (AssociationVerdict::kUnconfirmed).
   bool second_opinions = false;
+
+  // With a map that is not complete (map::HdMap::complete: one built from drives), the full
+  // frame is also read against the numbers of the map's numbering formats (map/numbering.h)
+  // that the map lacks; they match no landmark. A map built from a drive holds the numbers that
+  // drive read: a number outside it, read against the map's texts alone, is taken for the map's
+  // nearest number and can fix the pose at that number's place. A complete map lacks no
+  // number, and there the competitors only split the posterior of worn numbers (levels val:
+  // a first fix 1.9 s later on lv01_P3_d1).
+  bool numbering_competitors = true;
+  // Zone letters open (A### to Z###): the zones of a partial map need not be all the
+  // garage has.
+  map::NumberingOptions numbering = [] {
+    map::NumberingOptions o;
+    o.open_letters = true;
+    return o;
+  }();
 };
 
 // Which cameras are spotted on the full frame this frame set: the round robin while

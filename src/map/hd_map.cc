@@ -23,8 +23,12 @@ long long cellIndex(double coordinate, double cell_size) {
 }
 }  // namespace
 
-HdMap::HdMap(std::vector<Landmark> landmarks, std::string name, MapAccuracy accuracy)
-    : name_(std::move(name)), accuracy_(accuracy), landmarks_(std::move(landmarks)) {
+HdMap::HdMap(std::vector<Landmark> landmarks, std::string name, MapAccuracy accuracy,
+             bool complete)
+    : name_(std::move(name)),
+      accuracy_(accuracy),
+      complete_(complete),
+      landmarks_(std::move(landmarks)) {
   const std::string who = "map " + (name_.empty() ? std::string("(unnamed)") : name_) + ": ";
   if (const std::string problem = accuracyProblem(accuracy_); !problem.empty())
     throw InputError(who + "map-wide " + problem);

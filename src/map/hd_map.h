@@ -16,11 +16,14 @@ class HdMap {
   HdMap() = default;
   // Checks the landmarks (see validate) and builds the indexes; throws InputError.
   // `accuracy` is the map-wide default the file states (its landmarks carry it already where
-  // they state none of their own).
-  explicit HdMap(std::vector<Landmark> landmarks, std::string name = "", MapAccuracy accuracy = {});
+  // they state none of their own). `complete`: the map holds every text of the area it covers
+  // (a survey, a CAD drawing); false for one built from drives, which holds what they read.
+  explicit HdMap(std::vector<Landmark> landmarks, std::string name = "", MapAccuracy accuracy = {},
+                 bool complete = true);
 
   const std::string& name() const { return name_; }
   const MapAccuracy& accuracy() const { return accuracy_; }
+  bool complete() const { return complete_; }
   const std::vector<Landmark>& landmarks() const { return landmarks_; }
   size_t size() const { return landmarks_.size(); }
 
@@ -42,6 +45,7 @@ class HdMap {
 
   std::string name_;
   MapAccuracy accuracy_;
+  bool complete_ = true;
   std::vector<Landmark> landmarks_;
   std::unordered_multimap<std::string, size_t> by_text_;
   std::unordered_map<std::string, size_t> by_id_;

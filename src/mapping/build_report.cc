@@ -65,8 +65,8 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
     return frames ? 1000.0 * e.seconds / static_cast<double>(frames) : 0.0;
   }();
   nlohmann::json numbering = nlohmann::json::array();
-  for (const NumberingFormat& f : build.numbering) {
-    const std::vector<std::string> span = numberingLexicon({f});
+  for (const map::NumberingFormat& f : build.numbering) {
+    const std::vector<std::string> span = map::numberingLexicon({f});
     numbering.push_back({{"format", f.pattern},
                          {"numbers", f.support},
                          {"from", span.front()},

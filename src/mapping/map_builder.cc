@@ -58,14 +58,14 @@ void joinFrame(std::vector<SurveyPoses>& poses, size_t drive,
 }
 
 // The formats the user gives (ReadingOptions::formats); InputError for one that is none.
-std::vector<NumberingFormat> givenNumbering(const ReadingOptions& options) {
-  std::vector<NumberingFormat> formats;
+std::vector<map::NumberingFormat> givenNumbering(const ReadingOptions& options) {
+  std::vector<map::NumberingFormat> formats;
   std::string rest = options.formats;
   while (!rest.empty()) {
     const size_t comma = rest.find(',');
     const std::string pattern = rest.substr(0, comma);
     rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
-    if (!validNumbering(pattern, options.numbering.max_strings))
+    if (!map::validNumbering(pattern, options.numbering.max_strings))
       throw InputError(fmt::format(
           "numbering format '{}': expected characters and '#' for each open digit, spanning at "
           "most {} numbers (e.g. C### or K2-###)",
@@ -76,7 +76,7 @@ std::vector<NumberingFormat> givenNumbering(const ReadingOptions& options) {
 }
 
 // The formats of the numbers that a first reading of one drive agreed on.
-std::vector<NumberingFormat> learntNumbering(const std::vector<Sighting>& first,
+std::vector<map::NumberingFormat> learntNumbering(const std::vector<Sighting>& first,
                                              const geometry::Rig* rig, const SurveyPoses& poses,
                                              const MapBuildOptions& options) {
   // The drive is alone here: its sightings refer to drive 0 of a one-drive frame.
@@ -85,13 +85,13 @@ std::vector<NumberingFormat> learntNumbering(const std::vector<Sighting>& first,
   const Consensus agreed = formConsensus(own, castAll(own, {rig}, {poses}), options.consensus);
   std::vector<std::string> numbers;
   for (const TextTrack& t : agreed.tracks) numbers.push_back(t.text);
-  return learnNumbering(numbers, options.reading.numbering);
+  return map::learnNumbering(numbers, options.reading.numbering);
 }
 
-void addFormats(std::vector<NumberingFormat>& formats, const std::vector<NumberingFormat>& more) {
-  for (const NumberingFormat& f : more)
+void addFormats(std::vector<map::NumberingFormat>& formats, const std::vector<map::NumberingFormat>& more) {
+  for (const map::NumberingFormat& f : more)
     if (std::none_of(formats.begin(), formats.end(),
-                     [&](const NumberingFormat& g) { return g.pattern == f.pattern; }))
+                     [&](const map::NumberingFormat& g) { return g.pattern == f.pattern; }))
       formats.push_back(f);
 }
 
@@ -183,7 +183,7 @@ MapBuild buildMap(const std::vector<const io::Sequence*>& drives, ocr::TextSpott
   std::vector<SurveyPoses> poses;
   std::vector<Sighting> sightings;
   std::vector<ReadingStats> stats(drives.size());
-  std::vector<NumberingFormat> numbering = givenNumbering(options.reading);
+  std::vector<map::NumberingFormat> numbering = givenNumbering(options.reading);
   for (size_t d = 0; d < drives.size(); ++d) {
     const io::Sequence& drive = *drives[d];
     rigs.push_back(&drive.rig());
@@ -204,16 +204,16 @@ MapBuild buildMap(const std::vector<const io::Sequence*>& drives, ocr::TextSpott
       const auto tell = [&](size_t done, size_t total) {
         if (progress) progress(d, done, total);
       };
-      if (options.reading.numbering.learn) {
+      if (options.reading.learn_numbering) {
         ReadingStats survey;
         const std::vector<Sighting> first =
-            readDrive(drive, d, *spotter, options.reading.numbering.survey_step, {},
+            readDrive(drive, d, *spotter, options.reading.survey_step, {},
                       options.reading, survey, tell);
         stats[d].survey_frame_sets = survey.frame_sets;
         stats[d].survey_seconds = stats[d].seconds = survey.seconds;
         addFormats(numbering, learntNumbering(first, rigs[d], poses[d], options));
       }
-      read = readDrive(drive, d, *spotter, options.reading.frame_step, numberingLexicon(numbering),
+      read = readDrive(drive, d, *spotter, options.reading.frame_step, map::numberingLexicon(numbering),
                        options.reading, stats[d], tell);
     }
     if (read.empty())

@@ -52,7 +52,7 @@ struct MapBuild {
   EstimationSummary estimation;
   bool has_uncertainty = false;
   // The numbering formats the drives were read against (given, then learnt).
-  std::vector<NumberingFormat> numbering;
+  std::vector<map::NumberingFormat> numbering;
   // What the build could not do or doubts, one line each (empty: nothing).
   std::vector<std::string> problems;
 };

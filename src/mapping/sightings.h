@@ -10,7 +10,7 @@
 
 #include "io/sequence.h"
 #include "map/landmark.h"
-#include "mapping/numbering_format.h"
+#include "map/numbering.h"
 #include "ocr/text_spotter.h"
 
 namespace parkloc::mapping {
@@ -32,8 +32,12 @@ struct ReadingOptions {
   // A reading less probable than this (the recognizer's calibrated score) is no sighting: it
   // would only be outvoted in the consensus.
   double min_recognition_score = 0.5;
-  // The numbering formats the drive is read against (numbering_format.h) ...
-  NumberingOptions numbering;
+  // Learn the garage's numbering formats (map/numbering.h) from a first, free reading of every
+  // `survey_step`-th frame set, then read the drive again against the numbers they span.
+  // False: free reading only (and the formats the user gives, if any).
+  bool learn_numbering = true;
+  int survey_step = 3;
+  map::NumberingOptions numbering;
   // ... and those the user knows, comma-separated ("C###,K2-###"; empty: none).
   std::string formats;
 };
@@ -44,7 +48,7 @@ struct ReadingStats {
   size_t missing_images = 0;
   size_t instances = 0;  // text instances the spotter returned
   double seconds = 0.0;  // wall time of the spotting, both readings
-  // The first, free reading that learns the numbering (NumberingOptions::learn).
+  // The first, free reading that learns the numbering (ReadingOptions::learn_numbering).
   size_t survey_frame_sets = 0;
   double survey_seconds = 0.0;
 };

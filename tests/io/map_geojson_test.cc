@@ -259,6 +259,18 @@ TEST_F(MapGeoJsonTest, BadMapWideSigmaIsOneLine) {
             "map m.geojson: map-wide properties: expected an object, got array");
 }
 
+TEST_F(MapGeoJsonTest, AMapIsCompleteUnlessItSaysOtherwise) {
+  const map::HdMap complete({groundNumber("B1-1", 0, 0, 0)}, "survey");
+  saveMap(complete, path("survey.geojson"));
+  EXPECT_TRUE(loadMap(path("survey.geojson")).complete());
+  EXPECT_EQ(mapToGeoJson(complete).find("complete"), std::string::npos);
+  const map::HdMap built({groundNumber("B1-1", 0, 0, 0)}, "built", {}, /*complete=*/false);
+  saveMap(built, path("built.geojson"));
+  EXPECT_FALSE(loadMap(path("built.geojson")).complete());
+  EXPECT_EQ(errorFor(collectionWith(R"({"complete": "no"})", feature(kGood))),
+            "map m.geojson: map-wide properties: 'complete': expected true or false, got string");
+}
+
 TEST_F(MapGeoJsonTest, MapBuiltInCodeRejectsANonFiniteSigma) {
   map::Landmark l = groundNumber("B1-1", 0, 0, 0);
   l.accuracy.position_sigma = std::nan("");

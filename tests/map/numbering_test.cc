@@ -1,10 +1,10 @@
-#include "mapping/numbering_format.h"
+#include "map/numbering.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-namespace parkloc::mapping {
+namespace parkloc::map {
 namespace {
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
@@ -27,12 +27,29 @@ TEST(NumberingFormat, OneReadingMakesNoFormat) {
   EXPECT_EQ(formats[0].pattern, "C###");
 }
 
-TEST(NumberingFormat, SharedLeadingDigitsAreHeldUntilTheSpanFits) {
-  // Four digits would span 10000: the level digit every number shares is held, the bay
-  // number's hundreds (also shared here) stay open because the span already fits.
+TEST(NumberingFormat, TheLevelDigitStaysWhatTheNumbersShow) {
+  // The level digit is shared: part of the format; the bay numbers 086 to 103 and 50 either
+  // side span K2-036 to K2-153.
   const auto formats = learnNumbering({"K2-086", "K2-103", "K2-091"}, {});
   ASSERT_EQ(formats.size(), 1u);
   EXPECT_EQ(formats[0].pattern, "K2-###");
+  const auto lexicon = numberingLexicon(formats);
+  EXPECT_EQ(lexicon.size(), 118u);
+  EXPECT_EQ(lexicon.front(), "K2-036");
+  EXPECT_EQ(lexicon.back(), "K2-153");
+  // Near the start of the level's numbers the margin stops at K2-000, not in K1.
+  EXPECT_EQ(numberingLexicon(learnNumbering({"K2-010", "K2-020"}, {})).front(), "K2-000");
+}
+
+TEST(NumberingFormat, OpenZoneLettersThatSpanTooMuchCloseAgain) {
+  // C001 to C300 in every zone would be 26 x 351 numbers: each zone letter is a format of its
+  // own instead.
+  NumberingOptions options;
+  options.open_letters = true;
+  const auto formats = learnNumbering({"C001", "C300", "D010", "D020"}, options);
+  ASSERT_EQ(formats.size(), 2u);
+  EXPECT_EQ(formats[0].pattern, "C###");
+  EXPECT_EQ(formats[1].pattern, "D###");
 }
 
 TEST(NumberingFormat, ALearntFormatSpansTheNumbersNearThoseRead) {
@@ -49,11 +66,27 @@ TEST(NumberingFormat, ALearntFormatSpansTheNumbersNearThoseRead) {
   EXPECT_FALSE(contains(lexicon, "111"));
 }
 
-TEST(NumberingFormat, AFormatThatCannotBeNarrowedIsDropped) {
+TEST(NumberingFormat, ZoneLettersThatDifferOpenToEveryCapital) {
+  NumberingOptions options;
+  options.open_letters = true;
+  const auto formats = learnNumbering({"C004", "C009", "D002", "K2-086", "K2-091"}, options);
+  ASSERT_EQ(formats.size(), 2u);
+  EXPECT_EQ(formats[0].pattern, "@###");  // C and D differ: a zone letter
+  EXPECT_EQ(formats[1].pattern, "K2-###");  // K2 is shared: part of the format
+  const auto lexicon = numberingLexicon({formats[0]});
+  EXPECT_EQ(lexicon.size(), 26u * 60u);  // 000 to 059 in every zone
+  EXPECT_TRUE(contains(lexicon, "B008"));
+  EXPECT_FALSE(contains(lexicon, "B060"));
+  // Closed, C and D are formats of their own; D has one number only.
+  const auto closed = learnNumbering({"C004", "C009", "D002"}, {});
+  ASSERT_EQ(closed.size(), 1u);
+  EXPECT_EQ(closed[0].pattern, "C###");
+}
+
+TEST(NumberingFormat, AFormatSpanningTooManyNumbersIsDropped) {
   NumberingOptions options;
   options.max_strings = 100;
-  // No digit is shared: "##-##" would span 10000.
-  EXPECT_TRUE(learnNumbering({"12-34", "56-78"}, options).empty());
+  EXPECT_TRUE(learnNumbering({"12-34", "56-78"}, options).empty());  // 1184 to 5728
 }
 
 TEST(NumberingFormat, TextsWithoutDigitsHaveNoFormat) {
@@ -78,4 +111,4 @@ TEST(NumberingFormat, ValidFormatsHaveAnOpenDigitAndABoundedSpan) {
 }
 
 }  // namespace
-}  // namespace parkloc::mapping
+}  // namespace parkloc::map

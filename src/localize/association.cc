@@ -25,14 +25,15 @@ int rank(AssociationVerdict v) {
 
 Associator::Associator(const geometry::Rig& rig, const map::HdMap& map, const FloorHeights& floors,
                        const AssociationOptions& options, const PaperModuleOptions& modules,
-                       PolygonModel polygon_model, bool paper_mode)
+                       PolygonModel polygon_model, bool paper_mode, double surveyed_size_sigma)
     : rig_(rig),
       map_(map),
       floors_(floors),
       options_(options),
       modules_(modules),
       polygon_model_(polygon_model),
-      paper_mode_(paper_mode) {
+      paper_mode_(paper_mode),
+      surveyed_size_sigma_(surveyed_size_sigma) {
   gate_options_.centre_sigma_px = options.gate_centre_sigma_px;
   gate_options_.min_radius_m = options.gate_min_radius_m;
   reset();
@@ -85,7 +86,8 @@ AssociatedObservations Associator::associate(const std::vector<CameraResult>& ca
             map_.findByText(instance.text, level.restriction());
         if (!level.belief().decided)
           candidates =
-              onePerPlace(candidates, level.belief().level, level.options().shared_place_m);
+              onePerPlace(candidates, level.belief().level, level.options().shared_place_m,
+                          surveyed_size_sigma_);
         const auto observe = [&](const map::Landmark& landmark) {
           LandmarkObservation o;
           o.camera = static_cast<int>(c);

@@ -51,10 +51,11 @@ struct AssociatedObservations {
 
 class Associator {
  public:
-  // The rig, map and floors must outlive the associator.
+  // The rig, map and floors must outlive the associator. `surveyed_size_sigma`: how well a map
+  // that states its accuracy knows the texts' sizes (SolverOptions::map_size_sigma).
   Associator(const geometry::Rig& rig, const map::HdMap& map, const FloorHeights& floors,
              const AssociationOptions& options, const PaperModuleOptions& modules,
-             PolygonModel polygon_model, bool paper_mode);
+             PolygonModel polygon_model, bool paper_mode, double surveyed_size_sigma);
   void reset();
 
   // Appends one Association per instance (cameras in order, then instances) to
@@ -73,6 +74,7 @@ class Associator {
   PaperModuleOptions modules_;
   PolygonModel polygon_model_;
   bool paper_mode_;
+  double surveyed_size_sigma_;
   GateOptions gate_options_;
   BoxPlotFilter afm_;
 };

@@ -81,7 +81,7 @@ struct Pipeline::Impl {
         reading(rig, nominal_rig, map, floors, o.reading, o.reading.map_guided && !o.paper_mode),
         level(map, o.levels, o.level),
         associator(rig, map, floors, o.association, o.paper_modules, o.measurement.polygon_model,
-                   o.paper_mode),
+                   o.paper_mode, o.solver.map_size_sigma),
         measurement(rig, o.solver, o.measurement, o.tracking),
         lifecycle(o.tracking,
                   searchWindowFrames(o.reading.search_cameras_per_frame, rig.cameras.size())),

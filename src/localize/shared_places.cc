@@ -10,12 +10,10 @@ namespace {
 // Reading directions within 20 degrees are one direction.
 constexpr double kSameDirectionRad = 20.0 * M_PI / 180.0;
 // Sizes this close (share of the larger) are one size: the sizes of one text in a map differ by
-// its survey, not by its font.
+// its survey, not by its font. A map that states its accuracy is a survey whose sizes are the
+// nominal painted ones, each off by some per cent: two of them differ by up to three sigmas of
+// their difference.
 constexpr double kSameSizeShare = 0.10;
-// A map that states its accuracy is a survey whose sizes are the nominal painted ones, each off
-// by some per cent (pose_solver.h, SolverOptions::map_size_sigma): two of them differ by up to
-// three sigmas of their difference.
-constexpr double kSurveyedSizeSigma = 0.05;
 // Two surveys of one place differ by N(0, sa^2 + sb^2) per axis; 99 % of such horizontal
 // differences lie within 3.03 sigmas (the Rayleigh distribution's 99th percentile).
 constexpr double kSamePlaceSigmas = 3.03;
@@ -38,21 +36,23 @@ bool samePlace(const map::Landmark& a, const map::Landmark& b, double tolerance_
   return a.readingDirection().head<2>().dot(b.readingDirection().head<2>()) >= cos_within;
 }
 
-bool interchangeable(const map::Landmark& a, const map::Landmark& b, double tolerance_m) {
+bool interchangeable(const map::Landmark& a, const map::Landmark& b, double tolerance_m,
+                     double surveyed_size_sigma) {
   const bool surveyed = a.accuracy.position_sigma || b.accuracy.position_sigma;
   const double share =
-      surveyed ? std::max(kSameSizeShare, 3.0 * std::sqrt(2.0) * kSurveyedSizeSigma)
+      surveyed ? std::max(kSameSizeShare, 3.0 * std::sqrt(2.0) * surveyed_size_sigma)
                : kSameSizeShare;
   const auto close = [&](double u, double v) { return std::abs(u - v) <= share * std::max(u, v); };
   return samePlace(a, b, tolerance_m) && close(a.width, b.width) && close(a.height, b.height);
 }
 
 std::vector<const map::Landmark*> onePerPlace(const std::vector<const map::Landmark*>& landmarks,
-                                              const std::string& preferred, double tolerance_m) {
+                                              const std::string& preferred, double tolerance_m,
+                                              double surveyed_size_sigma) {
   std::vector<const map::Landmark*> kept;
   for (const map::Landmark* l : landmarks) {
     const auto same = std::find_if(kept.begin(), kept.end(), [&](const map::Landmark* k) {
-      return k->text == l->text && interchangeable(*k, *l, tolerance_m);
+      return k->text == l->text && interchangeable(*k, *l, tolerance_m, surveyed_size_sigma);
     });
     if (same == kept.end())
       kept.push_back(l);

@@ -18,16 +18,19 @@ namespace parkloc::localize {
 // that error allows (3 sigmas of the difference) when it is more.
 bool samePlace(const map::Landmark& a, const map::Landmark& b, double tolerance_m);
 
-// Whether two landmarks at one place also agree in size (width and height within 10 %, 21 %
-// where the map states an accuracy: a survey's sizes are nominal, 5 % each): only then do
+// Whether two landmarks at one place also agree in size (width and height within 10 %; where
+// the map states an accuracy, within three sigmas of the difference of two nominal sizes each
+// known to `surveyed_size_sigma`, SolverOptions::map_size_sigma: 21 % at 5 %): only then do
 // their corners fix the pose alike (one level's numbers may be painted in a narrower font than
 // another's at the same place).
-bool interchangeable(const map::Landmark& a, const map::Landmark& b, double tolerance_m);
+bool interchangeable(const map::Landmark& a, const map::Landmark& b, double tolerance_m,
+                     double surveyed_size_sigma);
 
 // One landmark per interchangeable group with one text: the one on `preferred` level (else the
 // first). Order is kept.
 std::vector<const map::Landmark*> onePerPlace(const std::vector<const map::Landmark*>& landmarks,
-                                              const std::string& preferred, double tolerance_m);
+                                              const std::string& preferred, double tolerance_m,
+                                              double surveyed_size_sigma);
 
 // The levels on which the map has `text` at the place of `at` (its own level included).
 std::set<std::string> levelsWithTextAt(const map::HdMap& map, const std::string& text,

@@ -204,15 +204,15 @@ TEST(LevelEstimateTest, LevelSignsLookLikeLevelNames) {
 
 TEST(SharedPlacesTest, OneLandmarkPerPlaceAndTextOnThePreferredLevel) {
   const map::HdMap map = twoLevels();
-  const auto kept = onePerPlace(map.findByText("117"), "B2", 0.3);
+  const auto kept = onePerPlace(map.findByText("117"), "B2", 0.3, 0.05);
   ASSERT_EQ(kept.size(), 1u);
   EXPECT_EQ(kept[0]->level, "B2");
-  EXPECT_EQ(onePerPlace(map.findByText("118"), "B2", 0.3).size(), 2u);  // two places
+  EXPECT_EQ(onePerPlace(map.findByText("118"), "B2", 0.3, 0.05).size(), 2u);  // two places
   // One place, but painted narrower on B2: its corners would not fix the pose alike.
   map::Landmark narrow = landmark("117", "B2", 0.0);
   narrow.width = 0.7;
   const map::HdMap fonts({landmark("117", "B1", 0.0), narrow}, "two fonts");
-  EXPECT_EQ(onePerPlace(fonts.findByText("117"), "B2", 0.3).size(), 2u);
+  EXPECT_EQ(onePerPlace(fonts.findByText("117"), "B2", 0.3, 0.05).size(), 2u);
 }
 
 TEST(SharedPlacesTest, APlaceAsksForTheTextOfEveryLevel) {
@@ -240,12 +240,13 @@ TEST(SharedPlacesTest, ASurveyedPlaceIsOnePlaceWithinWhatItsErrorAllows) {
   b2.heading = 4.0 * M_PI / 180.0;
   b2.width = 0.9 * 1.15;
   EXPECT_TRUE(samePlace(b1, b2, 0.3));
-  EXPECT_FALSE(interchangeable(b1, b2, 0.3));  // 15 % in width: another font
+  EXPECT_FALSE(interchangeable(b1, b2, 0.3, 0.05));  // 15 % in width: another font
   b2.position.x() = 0.40;
   EXPECT_FALSE(samePlace(b1, b2, 0.3));
   for (map::Landmark* l : {&b1, &b2}) l->accuracy = {0.10, 2.0 * M_PI / 180.0};
   EXPECT_TRUE(samePlace(b1, b2, 0.3));
-  EXPECT_TRUE(interchangeable(b1, b2, 0.3));  // a survey's nominal sizes
+  EXPECT_TRUE(interchangeable(b1, b2, 0.3, 0.05));  // a survey's nominal sizes (5 %)
+  EXPECT_FALSE(interchangeable(b1, b2, 0.3, 0.02));  // known to 2 %: 10 %, as one font
   b2.position.x() = 1.0;
   EXPECT_FALSE(samePlace(b1, b2, 0.3));
 }

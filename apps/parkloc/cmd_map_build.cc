@@ -164,10 +164,10 @@ void run(const MapBuildArgs& a) {
   if (!build.numbering.empty()) {
     std::vector<std::string> formats;
     for (const auto& f : build.numbering) {
-      const std::vector<std::string> span = map::numberingLexicon({f});
-      formats.push_back(f.support ? fmt::format("{} ({} to {}, from {} numbers)", f.pattern,
-                                                span.front(), span.back(), f.support)
-                                  : f.pattern + " (given)");
+      const auto [from, to] = map::numberingEnds(f);
+      formats.push_back(
+          f.support ? fmt::format("{} ({} to {}, from {} numbers)", f.pattern, from, to, f.support)
+                    : f.pattern + " (given)");
     }
     fmt::print("  read against the numbering {}\n", fmt::join(formats, ", "));
   }

@@ -5,7 +5,6 @@
 namespace parkloc::config {
 namespace {
 
-
 void describe(OptionVisitor& v, mapping::ReadingOptions& o) {
   v.value("frame_step", o.frame_step, "read every this many frame sets (1: all)");
   v.value("min_recognition_score", o.min_recognition_score,

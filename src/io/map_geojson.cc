@@ -147,9 +147,9 @@ bool mapComplete(const json& doc, const std::string& source) {
   const auto it = props->find("complete");
   if (it == props->end()) return true;
   if (!it->is_boolean())
-    throw InputError(fmt::format("map {}: map-wide properties: 'complete': expected true or "
-                                 "false, got {}",
-                                 source, it->type_name()));
+    throw InputError(
+        fmt::format("map {}: map-wide properties: 'complete': expected true or false, got {}",
+                    source, it->type_name()));
   return it->get<bool>();
 }
 

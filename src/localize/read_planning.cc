@@ -9,18 +9,21 @@
 namespace parkloc::localize {
 namespace {
 
-// `texts` and, for a map that does not hold every text of its area, the numbers of its
-// numbering formats that it lacks (ReadingOptions::numbering_competitors).
-std::vector<std::string> withCompetitors(std::vector<std::string> texts, const map::HdMap& map,
-                                         const ReadingOptions& options) {
-  if (!options.numbering_competitors || map.complete()) return texts;
+// The numbers of the map's numbering formats (ReadingOptions::numbering_competitors); none for
+// a map that holds every text of its area.
+std::vector<std::string> numberingOf(const map::HdMap& map, const ReadingOptions& options) {
+  if (!options.numbering_competitors || map.complete()) return {};
   std::vector<std::string> numbers;
   for (const map::Landmark& l : map.landmarks())
     if (l.cls == map::TextClass::kParkingNumber) numbers.push_back(l.text);
+  return map::numberingLexicon(map::learnNumbering(numbers, options.numbering));
+}
+
+// Appends to `texts` the `numbers` it lacks: they compete with the map's texts and match none.
+void addCompetitors(std::vector<std::string>& texts, const std::vector<std::string>& numbers) {
   const std::set<std::string> known(texts.begin(), texts.end());
-  for (std::string& n : map::numberingLexicon(map::learnNumbering(numbers, options.numbering)))
-    if (!known.count(n)) texts.push_back(std::move(n));
-  return texts;
+  for (const std::string& n : numbers)
+    if (!known.count(n)) texts.push_back(n);
 }
 
 }  // namespace
@@ -36,8 +39,11 @@ ReadPlanner::ReadPlanner(const geometry::Rig& rig, const geometry::Rig& calibrat
       schedule_(options, guided),
       // Every level's texts: the full frame is where the texts of another level (after a
       // ramp) and the level signs are read.
-      lexicon_(withCompetitors(map::distinctTexts(map), map, options)),
-      floor_lexicon_(withCompetitors(map::distinctTexts(map, /*floor_only=*/true), map, options)) {
+      lexicon_(map::distinctTexts(map)),
+      floor_lexicon_(map::distinctTexts(map, /*floor_only=*/true)) {
+  const std::vector<std::string> numbers = numberingOf(map, options);
+  addCompetitors(lexicon_, numbers);
+  addCompetitors(floor_lexicon_, numbers);
   roi_options_.margin_px = options.roi_margin_px;
   roi_options_.min_size_px = options.roi_min_size_px;
 }
@@ -89,9 +95,9 @@ ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimat
       }
   }
   RegionBudgetOptions budget;
-  budget.max_regions = sweeping ? std::min(options_.max_regions_per_frame,
-                                                       options_.max_regions_with_full_frame)
-                                            : options_.max_regions_per_frame;
+  budget.max_regions =
+      sweeping ? std::min(options_.max_regions_per_frame, options_.max_regions_with_full_frame)
+               : options_.max_regions_per_frame;
   if (options_.max_regions_per_frame <= 0)
     budget.max_regions = 0;  // no budget
   else if (budget.max_regions <= 0)

@@ -33,11 +33,31 @@ long long digitValues(const std::string& pattern) {
   return values;
 }
 
+// The last value of the format's digits (NumberingFormat::last, every value when below first).
+long long lastValue(const NumberingFormat& f) {
+  const long long values = digitValues(f.pattern);
+  return f.last < f.first ? values - 1 : std::min(f.last, values - 1);
+}
+
 // How many numbers the format spans: its letters' and its digits' range.
 long long spannedBy(const NumberingFormat& f) {
-  const long long values = digitValues(f.pattern);
-  const long long digits = f.last < f.first ? values : std::min(f.last, values - 1) - f.first + 1;
-  return spanOf(f.pattern) / values * digits;
+  return spanOf(f.pattern) / digitValues(f.pattern) * (lastValue(f) - f.first + 1);
+}
+
+// The format's number whose open digits read `value` and whose open letters are the
+// `letters`-th combination (A..Z per letter, the last letter fastest).
+std::string numberOf(const NumberingFormat& f, long long letters, long long value) {
+  std::string s = f.pattern;
+  for (auto it = s.rbegin(); it != s.rend(); ++it) {
+    if (*it == kDigit) {
+      *it = static_cast<char>('0' + value % 10);
+      value /= 10;
+    } else if (*it == kLetter) {
+      *it = static_cast<char>('A' + letters % 26);
+      letters /= 26;
+    }
+  }
+  return s;
 }
 
 }  // namespace
@@ -80,21 +100,17 @@ std::vector<NumberingFormat> learnNumbering(const std::vector<std::string>& numb
     for (size_t i = 0; i < bay; ++i)
       if (pattern[i] == kDigit && shared(i)) pattern[i] = members.front()[i];
     // The format spans its members' values and the margin either side.
-    const auto ranged = [&](const std::string& p) {
-      NumberingFormat format{p, static_cast<int>(members.size())};
-      long long smallest = digitValues(p), largest = -1;
-      for (const std::string& m : members) {
-        long long value = 0;
-        for (size_t i = 0; i < p.size(); ++i)
-          if (p[i] == kDigit) value = 10 * value + (m[i] - '0');
-        smallest = std::min(smallest, value);
-        largest = std::max(largest, value);
-      }
-      format.first = std::max(0LL, smallest - options.range_margin);
-      format.last = std::min(digitValues(p) - 1, largest + options.range_margin);
-      return format;
-    };
-    const NumberingFormat format = ranged(pattern);
+    NumberingFormat format{pattern, static_cast<int>(members.size())};
+    long long smallest = digitValues(pattern), largest = -1;
+    for (const std::string& m : members) {
+      long long value = 0;
+      for (size_t i = 0; i < pattern.size(); ++i)
+        if (pattern[i] == kDigit) value = 10 * value + (m[i] - '0');
+      smallest = std::min(smallest, value);
+      largest = std::max(largest, value);
+    }
+    format.first = std::max(0LL, smallest - options.range_margin);
+    format.last = std::min(digitValues(pattern) - 1, largest + options.range_margin);
     if (spannedBy(format) > options.max_strings) {
       // Zone letters open make too many numbers: each letter its own format, as the numbers
       // show them.
@@ -116,28 +132,18 @@ std::vector<std::string> numberingLexicon(const std::vector<NumberingFormat>& fo
   std::vector<std::string> lexicon;
   std::set<std::string> seen;
   for (const NumberingFormat& f : formats) {
-    std::vector<size_t> digits, letters;
-    for (size_t i = 0; i < f.pattern.size(); ++i) {
-      if (f.pattern[i] == kDigit) digits.push_back(i);
-      if (f.pattern[i] == kLetter) letters.push_back(i);
-    }
-    const long long values = digitValues(f.pattern);
-    const long long last = f.last < f.first ? values - 1 : std::min(f.last, values - 1);
-    long long letter_combinations = 1;
-    for (size_t k = 0; k < letters.size(); ++k) letter_combinations *= 26;
+    const long long letter_combinations = spanOf(f.pattern) / digitValues(f.pattern);
     for (long long l = 0; l < letter_combinations; ++l)
-      for (long long v = std::max(0LL, f.first); v <= last; ++v) {
-        std::string s = f.pattern;
-        long long rest = v;
-        for (auto it = digits.rbegin(); it != digits.rend(); ++it, rest /= 10)
-          s[*it] = static_cast<char>('0' + rest % 10);
-        rest = l;
-        for (auto it = letters.rbegin(); it != letters.rend(); ++it, rest /= 26)
-          s[*it] = static_cast<char>('A' + rest % 26);
-        if (seen.insert(s).second) lexicon.push_back(std::move(s));
-      }
+      for (long long v = std::max(0LL, f.first); v <= lastValue(f); ++v)
+        if (std::string s = numberOf(f, l, v); seen.insert(s).second)
+          lexicon.push_back(std::move(s));
   }
   return lexicon;
+}
+
+std::pair<std::string, std::string> numberingEnds(const NumberingFormat& f) {
+  return {numberOf(f, 0, std::max(0LL, f.first)),
+          numberOf(f, spanOf(f.pattern) / digitValues(f.pattern) - 1, lastValue(f))};
 }
 
 }  // namespace parkloc::map

@@ -9,6 +9,7 @@
 // map's formats that the map lacks compete with the map's own, so that a number outside a
 // partial map is read as itself, not as the nearest number of the map (docs/LOCALIZATION.md).
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace parkloc::map {
@@ -51,6 +52,9 @@ std::vector<NumberingFormat> learnNumbering(const std::vector<std::string>& numb
 // True when `pattern` is a format: printable characters without spaces, at least one '#',
 // spanning at most `max_strings` numbers.
 bool validNumbering(const std::string& pattern, int max_strings);
+
+// The first and the last number the format spans ("C000", "C059").
+std::pair<std::string, std::string> numberingEnds(const NumberingFormat& format);
 
 // Every string of the formats, without repeats.
 std::vector<std::string> numberingLexicon(const std::vector<NumberingFormat>& formats);

@@ -66,11 +66,9 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
   }();
   nlohmann::json numbering = nlohmann::json::array();
   for (const map::NumberingFormat& f : build.numbering) {
-    const std::vector<std::string> span = map::numberingLexicon({f});
-    numbering.push_back({{"format", f.pattern},
-                         {"numbers", f.support},
-                         {"from", span.front()},
-                         {"to", span.back()}});
+    const auto [from, to] = map::numberingEnds(f);
+    numbering.push_back(
+        {{"format", f.pattern}, {"numbers", f.support}, {"from", from}, {"to", to}});
   }
   return {{"level", level},
           {"drives", drives},

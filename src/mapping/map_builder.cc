@@ -77,8 +77,9 @@ std::vector<map::NumberingFormat> givenNumbering(const ReadingOptions& options) 
 
 // The formats of the numbers that a first reading of one drive agreed on.
 std::vector<map::NumberingFormat> learntNumbering(const std::vector<Sighting>& first,
-                                             const geometry::Rig* rig, const SurveyPoses& poses,
-                                             const MapBuildOptions& options) {
+                                                  const geometry::Rig* rig,
+                                                  const SurveyPoses& poses,
+                                                  const MapBuildOptions& options) {
   // The drive is alone here: its sightings refer to drive 0 of a one-drive frame.
   std::vector<Sighting> own = first;
   for (Sighting& s : own) s.drive = 0;
@@ -88,7 +89,8 @@ std::vector<map::NumberingFormat> learntNumbering(const std::vector<Sighting>& f
   return map::learnNumbering(numbers, options.reading.numbering);
 }
 
-void addFormats(std::vector<map::NumberingFormat>& formats, const std::vector<map::NumberingFormat>& more) {
+void addFormats(std::vector<map::NumberingFormat>& formats,
+                const std::vector<map::NumberingFormat>& more) {
   for (const map::NumberingFormat& f : more)
     if (std::none_of(formats.begin(), formats.end(),
                      [&](const map::NumberingFormat& g) { return g.pattern == f.pattern; }))
@@ -206,15 +208,14 @@ MapBuild buildMap(const std::vector<const io::Sequence*>& drives, ocr::TextSpott
       };
       if (options.reading.learn_numbering) {
         ReadingStats survey;
-        const std::vector<Sighting> first =
-            readDrive(drive, d, *spotter, options.reading.survey_step, {},
-                      options.reading, survey, tell);
+        const std::vector<Sighting> first = readDrive(
+            drive, d, *spotter, options.reading.survey_step, {}, options.reading, survey, tell);
         stats[d].survey_frame_sets = survey.frame_sets;
         stats[d].survey_seconds = stats[d].seconds = survey.seconds;
         addFormats(numbering, learntNumbering(first, rigs[d], poses[d], options));
       }
-      read = readDrive(drive, d, *spotter, options.reading.frame_step, map::numberingLexicon(numbering),
-                       options.reading, stats[d], tell);
+      read = readDrive(drive, d, *spotter, options.reading.frame_step,
+                       map::numberingLexicon(numbering), options.reading, stats[d], tell);
     }
     if (read.empty())
       throw InputError(fmt::format("drive {}: no parking number was read in {} frame sets",

@@ -71,12 +71,15 @@ TEST(NumberingFormat, ZoneLettersThatDifferOpenToEveryCapital) {
   options.open_letters = true;
   const auto formats = learnNumbering({"C004", "C009", "D002", "K2-086", "K2-091"}, options);
   ASSERT_EQ(formats.size(), 2u);
-  EXPECT_EQ(formats[0].pattern, "@###");  // C and D differ: a zone letter
+  EXPECT_EQ(formats[0].pattern, "@###");    // C and D differ: a zone letter
   EXPECT_EQ(formats[1].pattern, "K2-###");  // K2 is shared: part of the format
   const auto lexicon = numberingLexicon({formats[0]});
   EXPECT_EQ(lexicon.size(), 26u * 60u);  // 000 to 059 in every zone
   EXPECT_TRUE(contains(lexicon, "B008"));
   EXPECT_FALSE(contains(lexicon, "B060"));
+  EXPECT_EQ(numberingEnds(formats[0]), std::make_pair(lexicon.front(), lexicon.back()));
+  EXPECT_EQ(lexicon.front(), "A000");
+  EXPECT_EQ(lexicon.back(), "Z059");
   // Closed, C and D are formats of their own; D has one number only.
   const auto closed = learnNumbering({"C004", "C009", "D002"}, {});
   ASSERT_EQ(closed.size(), 1u);

@@ -82,7 +82,9 @@ std::vector<NumberingFormat> learnNumbering(const std::vector<std::string>& numb
     if (shape.find(kDigit) != std::string::npos) by_shape[shape].push_back(n);
   }
   std::vector<NumberingFormat> formats;
-  for (auto& [shape, members] : by_shape) {
+  for (const auto& entry : by_shape) {
+    const std::vector<std::string>& members = entry.second;  // a lambda may not capture a binding
+    const std::string& shape = entry.first;
     if (static_cast<int>(members.size()) < std::max(1, options.min_support)) continue;
     const auto shared = [&](size_t i) {
       return std::all_of(members.begin(), members.end(),

@@ -13,7 +13,8 @@ Eigen::Matrix3d carryJacobian(const geometry::Pose2& then, const geometry::Pose2
   return J;
 }
 
-PoseFix carryFix(const PoseFix& fix, const geometry::Pose2& motion) {
+PoseFix carryFix(const PoseFix& fix, const geometry::Pose2& motion,
+                 const OdometrySensitivity& sensitivity) {
   const Eigen::Matrix3d J = carryJacobian(fix.pose, motion);
   PoseFix now = fix;
   now.pose = fix.pose * motion;
@@ -22,13 +23,15 @@ PoseFix carryFix(const PoseFix& fix, const geometry::Pose2& motion) {
   now.floor = J * fix.floor * J.transpose();
   now.pixel_part = J * fix.pixel_part * J.transpose();
   for (MapErrorTerm& t : now.map_terms) t.J_fix_map = (J * t.J_fix_map).eval();
+  now.carried = J * fix.carried + sensitivity;
   return now;
 }
 
-FrameFixes carryFixes(const FrameFixes& fixes, const geometry::Pose2& motion) {
+FrameFixes carryFixes(const FrameFixes& fixes, const geometry::Pose2& motion,
+                      const OdometrySensitivity& sensitivity) {
   FrameFixes now = fixes;
-  if (fixes.agreeing) now.agreeing = carryFix(*fixes.agreeing, motion);
-  if (fixes.disagreeing) now.disagreeing = carryFix(*fixes.disagreeing, motion);
+  if (fixes.agreeing) now.agreeing = carryFix(*fixes.agreeing, motion, sensitivity);
+  if (fixes.disagreeing) now.disagreeing = carryFix(*fixes.disagreeing, motion, sensitivity);
   return now;
 }
 

@@ -390,7 +390,8 @@ struct Pipeline::Impl {
     result.timings.solver_ms += solve_time.elapsedMs();
 
     const Stopwatch filter_time;
-    lifecycle.apply(carryFixes(fixes, motion_since), tracking_then, ekf, motion, late);
+    lifecycle.apply(carryFixes(fixes, motion_since, ekf.odometrySensitivitySince(then.ekf)),
+                    tracking_then, ekf, motion, late);
     result.timings.filter_ms += filter_time.elapsedMs();
     if (late.status == TrackingStatus::kOk) result.status = TrackingStatus::kOk;
     result.reinitialised = result.reinitialised || late.reinitialised;

@@ -90,6 +90,7 @@ void PoseEkf::predictWithOdometry(double speed, double yaw_rate, double dt) {
   const Eigen::Vector2d input_variance(options_.speed_sigma * options_.speed_sigma,
                                        options_.yaw_rate_sigma * options_.yaw_rate_sigma);
   covariance_ = F * covariance_ * F.transpose() + G * input_variance.asDiagonal() * G.transpose();
+  transition_ = (F * transition_).eval();
   // The map errors stay where they are; their correlation with the state moves with it.
   if (cross_.cols() > 0) cross_ = (F * cross_).eval();
   covariance_(kBias, kBias) += options_.yaw_rate_bias_walk * options_.yaw_rate_bias_walk * dt;
@@ -103,31 +104,58 @@ void PoseEkf::predictWithoutOdometry(double dt) {
   covariance_.diagonal() += StateVector(p * p, p * p, y * y, b * b, k * k) * dt;
 }
 
-double PoseEkf::mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& R) const {
+OdometrySensitivity PoseEkf::odometrySensitivitySince(const PoseEkf& then) const {
+  // Transitions are [A B; 0 I] (bias and scale are carried as they are): now * then^-1 has
+  // B_now - A_now A_then^-1 B_then as its top right block.
+  const Eigen::Matrix3d A_then = then.transition_.topLeftCorner<3, 3>();
+  return transition_.topRightCorner<3, 2>() - transition_.topLeftCorner<3, 3>() * A_then.inverse() *
+                                                  then.transition_.topRightCorner<3, 2>();
+}
+
+namespace {
+
+// H = [I -carried] on the core state (x, y, yaw, bias, scale).
+Eigen::Matrix<double, 3, PoseEkf::kStateSize> directH(const OdometrySensitivity& carried) {
+  Eigen::Matrix<double, 3, PoseEkf::kStateSize> H;
+  H.leftCols<3>().setIdentity();
+  H.rightCols<2>() = -carried;
+  return H;
+}
+
+}  // namespace
+
+double PoseEkf::mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& R,
+                             const OdometrySensitivity& carried) const {
   const Eigen::Vector3d nu = innovation(fix, pose_);
-  const Eigen::Matrix3d S = covariance() + R;
+  const auto H = directH(carried);
+  const Eigen::Matrix3d S = H * covariance_ * H.transpose() + R;
   return nu.dot(S.ldlt().solve(nu));
 }
 
 void PoseEkf::update(const geometry::Pose2& fix, const Eigen::Matrix3d& R) {
+  updateDirect(fix, R, OdometrySensitivity::Zero());
+}
+
+void PoseEkf::updateDirect(const geometry::Pose2& fix, const Eigen::Matrix3d& R,
+                           const OdometrySensitivity& carried) {
   if (!map_ids_.empty()) {
     Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, kStateSize + map_error_.size());
-    H.leftCols<3>().setIdentity();
+    H.leftCols<kStateSize>() = directH(carried);
     updateFull(innovation(fix, pose_), H, R);
     return;
   }
-  // H = [I 0]: P H^T is the first three columns of P, H P H^T its top-left block.
   const Eigen::Vector3d nu = innovation(fix, pose_);
-  const Eigen::Matrix3d S = covariance() + R;
-  Eigen::Matrix<double, kStateSize, 3> K = covariance_.leftCols<3>() * S.inverse();
+  const auto H = directH(carried);
+  const Eigen::Matrix<double, kStateSize, 3> PHt = covariance_ * H.transpose();
+  const Eigen::Matrix3d S = H * PHt + R;
+  Eigen::Matrix<double, kStateSize, 3> K = PHt * S.inverse();
   if (time_ - started_ < options_.odometry_learning_delay_s) K.bottomRows<2>().setZero();
   const StateVector dx = K * nu;
   pose_ = geometry::Pose2(pose_.x + dx(0), pose_.y + dx(1), pose_.yaw + dx(2));
   bias_ += dx(kBias);
   scale_ += dx(kScale);
   // Joseph form keeps the covariance symmetric positive definite.
-  StateMatrix I_KH = StateMatrix::Identity();
-  I_KH.leftCols<3>() -= K;
+  const StateMatrix I_KH = StateMatrix::Identity() - K * H;
   covariance_ = I_KH * covariance_ * I_KH.transpose() + K * R * K.transpose();
   covariance_ = 0.5 * (covariance_ + covariance_.transpose()).eval();
 }
@@ -165,9 +193,9 @@ Eigen::Matrix3d covarianceMinimum(const Eigen::Matrix3d& A, const Eigen::Matrix3
 }
 
 void PoseEkf::update(const geometry::Pose2& fix, const Eigen::Matrix3d& R,
-                     const Eigen::Matrix3d& map_part) {
+                     const Eigen::Matrix3d& map_part, const OdometrySensitivity& carried) {
   const Eigen::Matrix3d before = covariance();
-  update(fix, R);
+  updateDirect(fix, R, carried);
   if (!map_part.allFinite() || map_part.isZero(0.0)) return;
   floorPoseCovariance(covarianceMinimum(before, map_part));
 }
@@ -293,10 +321,11 @@ void PoseEkf::initialise(const geometry::Pose2& pose, const Eigen::Matrix3d& R_p
 }
 
 double PoseEkf::mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& R_pixel,
-                             const std::vector<MapErrorTerm>& map_terms) const {
+                             const std::vector<MapErrorTerm>& map_terms,
+                             const OdometrySensitivity& carried) const {
   Eigen::Vector3d nu = innovation(fix, pose_);
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, kStateSize + map_error_.size());
-  H.leftCols<3>().setIdentity();
+  H.leftCols<kStateSize>() = directH(carried);
   Eigen::Matrix3d S = R_pixel;
   for (const MapErrorTerm& t : map_terms) {
     const auto it = std::find(map_ids_.begin(), map_ids_.end(), t.landmark_id);
@@ -314,17 +343,18 @@ double PoseEkf::mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& 
 }
 
 void PoseEkf::update(const geometry::Pose2& fix, const Eigen::Matrix3d& R_pixel,
-                     const std::vector<MapErrorTerm>& map_terms) {
+                     const std::vector<MapErrorTerm>& map_terms,
+                     const OdometrySensitivity& carried) {
   if (!mapErrorStates()) {
     Eigen::Matrix3d R = R_pixel;
     for (const MapErrorTerm& t : map_terms)
       R += t.J_fix_map * t.variance.asDiagonal() * t.J_fix_map.transpose();
-    update(fix, R);
+    updateDirect(fix, R, carried);
     return;
   }
   const std::vector<int> index = mapStates(map_terms);
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, kStateSize + map_error_.size());
-  H.leftCols<3>().setIdentity();
+  H.leftCols<kStateSize>() = directH(carried);
   Eigen::Vector3d nu = innovation(fix, pose_);
   for (size_t t = 0; t < map_terms.size(); ++t) {
     H.middleCols<5>(kStateSize + 5 * index[t]) += map_terms[t].J_fix_map;

@@ -66,6 +66,11 @@ OdometryArc odometryArc(double yaw, double speed, double yaw_rate, double bias, 
 // L V min(Lambda, 1) V^T L^T. A must be positive definite; B positive semi-definite.
 Eigen::Matrix3d covarianceMinimum(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B);
 
+// How a pose depends on the yaw-rate bias and the speed scale (d pose / d (bias, scale)): a
+// fix measured earlier and carried to the present by the filter's motion (late_fusion.h)
+// carries the filter's odometry errors over that motion with it.
+using OdometrySensitivity = Eigen::Matrix<double, 3, 2>;
+
 class PoseEkf {
  public:
   // State: x, y, yaw, yaw-rate bias, speed scale.
@@ -89,8 +94,20 @@ class PoseEkf {
   // No odometry: the pose stays, the covariance grows as a random walk.
   void predictWithoutOdometry(double dt);
 
+  // How the pose now depends on the bias and the scale through the motion predicted since
+  // `then`, an earlier copy of this filter, with the pose then held (the top right block of
+  // the state transition from then to now).
+  OdometrySensitivity odometrySensitivitySince(const PoseEkf& then) const;
+
+  // A fix may be one measured earlier and carried here by the filter's motion, with the
+  // odometry sensitivity G of that motion (zero for a fix of this time): it measures
+  // pose - G (bias - estimate, scale - estimate), H = [I -G 0]. Fused as if the pose now
+  // were measured, a late fix's heading would also be read as the bias's effect over the
+  // delay, which it has not seen.
+
   // Squared Mahalanobis distance of a pose fix with covariance R from the prediction.
-  double mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& R) const;
+  double mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& R,
+                      const OdometrySensitivity& carried = OdometrySensitivity::Zero()) const;
   // Standard EKF update with a direct pose measurement (H = [I 0], yaw innovation wrapped).
   void update(const geometry::Pose2& fix, const Eigen::Matrix3d& R);
   // Raises the pose covariance to at least `floor` (in the positive semi-definite order; the
@@ -103,8 +120,8 @@ class PoseEkf {
   // the smaller of what it was and map_part (covarianceMinimum). Where the filter already
   // knew better than those landmarks' map error it keeps what it had; where it knew worse
   // it comes down to their map error and no further, however many frames see them.
-  void update(const geometry::Pose2& fix, const Eigen::Matrix3d& R,
-              const Eigen::Matrix3d& map_part);
+  void update(const geometry::Pose2& fix, const Eigen::Matrix3d& R, const Eigen::Matrix3d& map_part,
+              const OdometrySensitivity& carried = OdometrySensitivity::Zero());
 
   // The map error states (EkfOptions::map_error_landmarks > 0).
   bool mapErrorStates() const { return options_.map_error_landmarks > 0; }
@@ -116,11 +133,13 @@ class PoseEkf {
   // Squared Mahalanobis distance of such a fix from the prediction (the map errors of its
   // landmarks from their states, or from the map's sigmas when they are no state).
   double mahalanobis2(const geometry::Pose2& fix, const Eigen::Matrix3d& R_pixel,
-                      const std::vector<MapErrorTerm>& map_terms) const;
+                      const std::vector<MapErrorTerm>& map_terms,
+                      const OdometrySensitivity& carried = OdometrySensitivity::Zero()) const;
   // Update with such a fix: H = [I 0 J_fix_map...], the landmarks' map errors added as
   // states (mean 0, the map's variances) when they are not yet.
   void update(const geometry::Pose2& fix, const Eigen::Matrix3d& R_pixel,
-              const std::vector<MapErrorTerm>& map_terms);
+              const std::vector<MapErrorTerm>& map_terms,
+              const OdometrySensitivity& carried = OdometrySensitivity::Zero());
   // The landmarks whose map errors are states, and the estimate of each (x, y, heading, log
   // width, log height).
   const std::vector<std::string>& mapErrorLandmarks() const { return map_ids_; }
@@ -148,6 +167,10 @@ class PoseEkf {
   double started_ = 0.0;  // time of the last initialise()
   StateMatrix covariance_ = StateMatrix::Identity();
   double time_ = 0.0;
+  // The state transition of every prediction since the filter was made (the product of their
+  // Jacobians; reset() keeps it): the transition between two copies of the filter is one's
+  // times the other's inverse.
+  StateMatrix transition_ = StateMatrix::Identity();
   // Map error states: 5 per landmark in map_ids_, their cross-covariance with the core state
   // (5 x 5m) and their covariance (5m x 5m); last_seen_ counts updates, for eviction.
   std::vector<std::string> map_ids_;
@@ -158,6 +181,9 @@ class PoseEkf {
   Eigen::MatrixXd map_covariance_;
 
   void clearMapErrors();
+  // The update with H = [I -carried 0].
+  void updateDirect(const geometry::Pose2& fix, const Eigen::Matrix3d& R,
+                    const OdometrySensitivity& carried);
   // The state index of each term's landmark, adding it (and evicting the oldest beyond the
   // limit, never one of this fix's) when it is not a state.
   std::vector<int> mapStates(const std::vector<MapErrorTerm>& map_terms);

@@ -17,8 +17,8 @@ double positionSigma(const Eigen::Matrix3d& covariance) {
 
 double fixDistance2(const PoseEkf& ekf, const PoseFix& fix) {
   if (ekf.mapErrorStates() && !fix.map_terms.empty())
-    return ekf.mahalanobis2(fix.pose, fix.pixel_part, fix.map_terms);
-  return ekf.mahalanobis2(fix.pose, fix.covariance);
+    return ekf.mahalanobis2(fix.pose, fix.pixel_part, fix.map_terms, fix.carried);
+  return ekf.mahalanobis2(fix.pose, fix.covariance, fix.carried);
 }
 
 bool isTracking(const PoseEkf& ekf, const TrackingOptions& options) {
@@ -124,13 +124,13 @@ void TrackLifecycle::apply(const FrameFixes& fixes, bool was_tracking, PoseEkf& 
   if (!fixes.agreeing) return;
   const PoseFix& fix = *fixes.agreeing;
   if (ekf.mapErrorStates() && !fix.map_terms.empty()) {
-    ekf.update(fix.pose, fix.pixel_part, fix.map_terms);
+    ekf.update(fix.pose, fix.pixel_part, fix.map_terms, fix.carried);
   } else {
     double uses = 0.0;
     for (const std::string& id : fix.landmarks)
       uses += std::min(fused_[id], options_.map_reuse_cap - 1);
     const double n = 1.0 + (fix.landmarks.empty() ? 0.0 : uses / fix.landmarks.size());
-    ekf.update(fix.pose, fix.covariance + (n - 1.0) * fix.map_part, fix.floor);
+    ekf.update(fix.pose, fix.covariance + (n - 1.0) * fix.map_part, fix.floor, fix.carried);
   }
   for (const std::string& id : fix.landmarks) ++fused_[id];
   result.fused_fixes.push_back({fix.pose, fix.pixel_part, fix.map_terms});

@@ -95,6 +95,10 @@ struct PoseFix {
   // landmark's map error moves the fix, and the covariance the fix has beside them.
   std::vector<MapErrorTerm> map_terms;
   Eigen::Matrix3d pixel_part = Eigen::Matrix3d::Zero();
+  // A fix measured earlier and carried to the present (late_fusion.h): how the carry's motion
+  // depends on the filter's bias and scale (PoseEkf::odometrySensitivitySince); zero for a fix
+  // of the present.
+  OdometrySensitivity carried = OdometrySensitivity::Zero();
 };
 
 // The fix's distance from the filter's prediction (squared Mahalanobis), through the map

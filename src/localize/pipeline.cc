@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <map>
 
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
@@ -49,6 +50,16 @@ struct Pipeline::Impl {
   struct Lane {
     std::unique_ptr<SearchWorker> worker;
     std::optional<PendingJob> pending;
+    // The job's copies of the images (the caller may reuse its buffers), one per camera,
+    // kept from job to job: a free worker is done with them, and copying into buffers of the
+    // right size spares the critical path a fresh allocation (and its page faults) for every
+    // image handed over.
+    std::map<size_t, cv::Mat> copies;
+    cv::Mat copyOf(size_t camera, const cv::Mat& image) {
+      cv::Mat& copy = copies[camera];
+      image.copyTo(copy);
+      return copy;
+    }
   };
   std::unique_ptr<SerializedSpotter> shared_spotter;  // without a search spotter of its own
   Lane search_lane;
@@ -268,9 +279,10 @@ struct Pipeline::Impl {
     for (size_t c = 0; c < nominal_rig.cameras.size() && !lanes.empty(); ++c) {
       if (!plan.choice.full_frame[c]) continue;
       if (const cv::Mat* image = spottableImage(frame, c)) {
-        SearchJob& job = jobs[next++ % lanes.size()];
+        const size_t k = next++ % lanes.size();
+        SearchJob& job = jobs[k];
         job.cameras.push_back(c);
-        job.images.push_back(image->clone());  // the caller may reuse its buffers
+        job.images.push_back(lanes[k]->copyOf(c, *image));
         job.requests.push_back(reading.request(c, plan, ekf.pose()));
         result.background_cameras.push_back(nominal_rig.cameras[c].name);
       }
@@ -298,7 +310,7 @@ struct Pipeline::Impl {
       std::move(fits, regions.end(), std::back_inserter(reads.regions[c]));
       regions.erase(fits, regions.end());
       job.cameras.push_back(c);
-      job.images.push_back(image->clone());
+      job.images.push_back(read_lane.copyOf(c, *image));
       job.requests.push_back(reading.request(c, reads, ekf.pose()));
       result.deferred_read_cameras.push_back(nominal_rig.cameras[c].name);
     }

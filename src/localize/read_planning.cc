@@ -91,7 +91,10 @@ ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimat
         r.roi.expected_texts = p.texts;
         // A place whose text differs between levels is read, not fitted, while the level
         // is undecided: its reading is what tells the level.
-        if (p.texts.size() > 1) last_read_.erase(r.landmark_id);
+        if (p.texts.size() > 1) {
+          last_read_.erase(r.landmark_id);
+          r.tells_level = options_.level_places_first;
+        }
       }
   }
   RegionBudgetOptions budget;
@@ -119,13 +122,15 @@ ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimat
   return plan;
 }
 
-// Texts read lately are only fitted; of the others, the largest are read, at most
-// max_reads_per_frame over all cameras; the rest wait for a later frame set.
+// Texts read lately are only fitted; of the others, the places that tell an undecided level
+// and then the largest are read, at most max_reads_per_frame over all cameras; the rest wait
+// for a later frame set.
 void ReadPlanner::chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& candidates,
                                      bool no_reads) {
   struct Unread {
     size_t camera, index;
     double size;
+    bool tells_level;
   };
   // Whether `when` holds a frame index for `id` within the last reread_interval_frames.
   const auto lately = [&](const std::map<std::string, int>& when, const std::string& id) {
@@ -143,12 +148,16 @@ void ReadPlanner::chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& 
         keep[c][i] = r.height_px >= options_.tracked_min_height_px;
       } else if (!lately(last_read_attempt_, r.landmark_id)) {
         // (A region tried lately and not read, occluded or blurred, waits a while.)
-        unread.push_back({c, i, r.size_px});
+        unread.push_back({c, i, r.size_px, r.tells_level});
       }
     }
   }
-  std::stable_sort(unread.begin(), unread.end(),
-                   [](const Unread& a, const Unread& b) { return a.size > b.size; });
+  // The places that tell the level first (ReadingOptions::level_places_first), then the
+  // largest.
+  std::stable_sort(unread.begin(), unread.end(), [](const Unread& a, const Unread& b) {
+    if (a.tells_level != b.tells_level) return a.tells_level;
+    return a.size > b.size;
+  });
   const size_t reads = no_reads ? 0
                        : options_.max_reads_per_frame > 0
                            ? std::min(unread.size(), size_t(options_.max_reads_per_frame))

@@ -19,6 +19,9 @@ struct RegionCandidate {
   std::string landmark_id;
   double size_px = 0.0;    // longest side of the predicted text quad
   double height_px = 0.0;  // extent across the reading direction (small: grazing view)
+  // While the level is undecided: a place whose text differs between levels (a level sign),
+  // whose reading tells the level.
+  bool tells_level = false;
 };
 
 struct RegionBudgetOptions {

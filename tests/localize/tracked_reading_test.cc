@@ -172,5 +172,49 @@ TEST(TrackedReading, APlanWithoutReadsLeavesItsTextsDueForTheNextPlan) {
   EXPECT_EQ(reads(after), reads(first));
 }
 
+TEST(TrackedReading, WhileTheLevelIsUndecidedTheLevelSignsAreReadFirst) {
+  // Two levels of one plan: the same parking numbers on both, and on each pillar the level's
+  // name ("B1" or "B2"), smaller than the numbers. Undecided, the planner reads the pillars,
+  // whose reading tells the level, before the larger numbers, which do not.
+  const map::HdMap plan = testing::aisleMap();
+  std::vector<map::Landmark> landmarks;
+  for (const std::string level : {"B1", "B2"})
+    for (map::Landmark l : plan.landmarks()) {
+      if (l.cls == map::TextClass::kPillar) {
+        l.text = level;
+        l.width = 0.2;
+        l.height = 0.1;
+      }
+      l.id = level + ":" + l.id;
+      l.level = level;
+      landmarks.push_back(l);
+    }
+  const map::HdMap map(landmarks, "two levels");
+  const geometry::Rig rig = geometry::defaultRig();
+  const FloorHeights floors(map);
+  PoseEkf ekf;
+  ekf.initialise(geometry::Pose2(0.0, 0.1, 0.0), Eigen::Matrix3d::Identity() * 1e-4, 0.0);
+  const LevelEstimate undecided(map, LevelOptions{}, "");
+  ASSERT_FALSE(undecided.belief().decided);
+  const auto signs_read = [&](bool first) {
+    ReadingOptions options;
+    options.max_reads_per_frame = 2;
+    options.full_frame_interval = 1000;
+    options.level_places_first = first;
+    ReadPlanner planner(rig, rig, map, floors, options, true);
+    const ReadPlan reading = planner.plan(true, ekf, undecided);
+    int signs = 0, reads = 0;
+    for (const auto& camera : reading.regions)
+      for (const auto& r : camera) {
+        reads += r.roi.read;
+        signs += r.roi.read && r.roi.expected_texts.size() == 2;
+      }
+    EXPECT_EQ(reads, 2);
+    return signs;
+  };
+  EXPECT_EQ(signs_read(true), 2);
+  EXPECT_EQ(signs_read(false), 0);  // by size alone: the numbers
+}
+
 }  // namespace
 }  // namespace parkloc::localize

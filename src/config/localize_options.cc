@@ -65,8 +65,9 @@ void describe(OptionVisitor& v, localize::ReadingOptions& o) {
           "a landmark read within this many frame sets is only fitted to its ink, not read");
   v.value("max_reads_per_frame", o.max_reads_per_frame,
           "regions read per frame set, the largest unread first (<= 0: no limit)");
-  v.value("level_places_first", o.level_places_first,
-          "while the level is undecided, places whose text differs between levels are read first");
+  v.value("level_place_reads", o.level_place_reads,
+          "while the level is undecided, reads that go first to places whose text differs between "
+          "levels (0: by size alone)");
   v.value("tracked_min_height_px", o.tracked_min_height_px,
           "predicted text flatter than this is not fitted: its corners would not fix the pose");
   v.value("tentative_reads_whole_lexicon", o.tentative_reads_whole_lexicon,

@@ -93,7 +93,7 @@ ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimat
         // is undecided: its reading is what tells the level.
         if (p.texts.size() > 1) {
           last_read_.erase(r.landmark_id);
-          r.tells_level = options_.level_places_first;
+          r.tells_level = true;
         }
       }
   }
@@ -152,12 +152,15 @@ void ReadPlanner::chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& 
       }
     }
   }
-  // The places that tell the level first (ReadingOptions::level_places_first), then the
-  // largest.
-  std::stable_sort(unread.begin(), unread.end(), [](const Unread& a, const Unread& b) {
-    if (a.tells_level != b.tells_level) return a.tells_level;
-    return a.size > b.size;
-  });
+  // The largest first; then up to level_place_reads places that tell the level move ahead.
+  std::stable_sort(unread.begin(), unread.end(),
+                   [](const Unread& a, const Unread& b) { return a.size > b.size; });
+  std::vector<Unread> first, rest;
+  for (const Unread& u : unread)
+    (u.tells_level && static_cast<int>(first.size()) < options_.level_place_reads ? first : rest)
+        .push_back(u);
+  unread = std::move(first);
+  unread.insert(unread.end(), rest.begin(), rest.end());
   const size_t reads = no_reads ? 0
                        : options_.max_reads_per_frame > 0
                            ? std::min(unread.size(), size_t(options_.max_reads_per_frame))

@@ -89,11 +89,12 @@ struct ReadingOptions {
   // At most this many regions are read per frame set over all cameras, the largest unread
   // first; one tried without success waits reread_interval_frames (<= 0: no limit).
   int max_reads_per_frame = 2;
-  // While the level is undecided, a place whose text differs between levels (a level sign
-  // on a pillar or a wall) is read before the others, however small: one reading of it can
-  // decide the level, where a parking number the levels share says nothing of it. false: by
-  // size alone.
-  bool level_places_first = true;
+  // While the level is undecided, up to this many of a frame set's reads go first to places
+  // whose text differs between levels (a level sign on a pillar or a wall), however small:
+  // one reading of one can decide the level, where a parking number the levels share says
+  // nothing of it; the other reads go to the largest texts, whose corners fix the pose.
+  // 0: by size alone.
+  int level_place_reads = 1;
   // Predicted text flatter than this (pixels) is not fitted: its corners would not fix the
   // pose.
   double tracked_min_height_px = 8.0;

@@ -196,11 +196,11 @@ TEST(TrackedReading, WhileTheLevelIsUndecidedTheLevelSignsAreReadFirst) {
   ekf.initialise(geometry::Pose2(0.0, 0.1, 0.0), Eigen::Matrix3d::Identity() * 1e-4, 0.0);
   const LevelEstimate undecided(map, LevelOptions{}, "");
   ASSERT_FALSE(undecided.belief().decided);
-  const auto signs_read = [&](bool first) {
+  const auto signs_read = [&](int level_place_reads) {
     ReadingOptions options;
     options.max_reads_per_frame = 2;
     options.full_frame_interval = 1000;
-    options.level_places_first = first;
+    options.level_place_reads = level_place_reads;
     ReadPlanner planner(rig, rig, map, floors, options, true);
     const ReadPlan reading = planner.plan(true, ekf, undecided);
     int signs = 0, reads = 0;
@@ -212,8 +212,9 @@ TEST(TrackedReading, WhileTheLevelIsUndecidedTheLevelSignsAreReadFirst) {
     EXPECT_EQ(reads, 2);
     return signs;
   };
-  EXPECT_EQ(signs_read(true), 2);
-  EXPECT_EQ(signs_read(false), 0);  // by size alone: the numbers
+  EXPECT_EQ(signs_read(2), 2);
+  EXPECT_EQ(signs_read(1), 1);  // the other read for the largest number
+  EXPECT_EQ(signs_read(0), 0);  // by size alone: the numbers
 }
 
 }  // namespace

@@ -122,9 +122,9 @@ ReadPlan ReadPlanner::plan(bool tracking, const PoseEkf& ekf, const LevelEstimat
   return plan;
 }
 
-// Texts read lately are only fitted; of the others, the places that tell an undecided level
-// and then the largest are read, at most max_reads_per_frame over all cameras; the rest wait
-// for a later frame set.
+// Texts read lately are only fitted; of the others, up to level_place_reads places that tell
+// an undecided level and then the largest are read, at most max_reads_per_frame over all
+// cameras; the rest wait for a later frame set.
 void ReadPlanner::chooseReadsAndFits(std::vector<std::vector<RegionCandidate>>& candidates,
                                      bool no_reads) {
   struct Unread {

@@ -33,6 +33,11 @@ long long digitValues(const std::string& pattern) {
   return values;
 }
 
+// The combinations of the pattern's open letters (26 per letter).
+long long letterCombinations(const std::string& pattern) {
+  return spanOf(pattern) / digitValues(pattern);
+}
+
 // The last value of the format's digits (NumberingFormat::last, every value when below first).
 long long lastValue(const NumberingFormat& f) {
   const long long values = digitValues(f.pattern);
@@ -41,7 +46,7 @@ long long lastValue(const NumberingFormat& f) {
 
 // How many numbers the format spans: its letters' and its digits' range.
 long long spannedBy(const NumberingFormat& f) {
-  return spanOf(f.pattern) / digitValues(f.pattern) * (lastValue(f) - f.first + 1);
+  return letterCombinations(f.pattern) * (lastValue(f) - f.first + 1);
 }
 
 // The format's number whose open digits read `value` and whose open letters are the
@@ -134,9 +139,9 @@ std::vector<std::string> numberingLexicon(const std::vector<NumberingFormat>& fo
   std::vector<std::string> lexicon;
   std::set<std::string> seen;
   for (const NumberingFormat& f : formats) {
-    const long long letter_combinations = spanOf(f.pattern) / digitValues(f.pattern);
-    for (long long l = 0; l < letter_combinations; ++l)
-      for (long long v = std::max(0LL, f.first); v <= lastValue(f); ++v)
+    const long long letters = letterCombinations(f.pattern), last = lastValue(f);
+    for (long long l = 0; l < letters; ++l)
+      for (long long v = std::max(0LL, f.first); v <= last; ++v)
         if (std::string s = numberOf(f, l, v); seen.insert(s).second)
           lexicon.push_back(std::move(s));
   }
@@ -145,7 +150,7 @@ std::vector<std::string> numberingLexicon(const std::vector<NumberingFormat>& fo
 
 std::pair<std::string, std::string> numberingEnds(const NumberingFormat& f) {
   return {numberOf(f, 0, std::max(0LL, f.first)),
-          numberOf(f, spanOf(f.pattern) / digitValues(f.pattern) - 1, lastValue(f))};
+          numberOf(f, letterCombinations(f.pattern) - 1, lastValue(f))};
 }
 
 }  // namespace parkloc::map

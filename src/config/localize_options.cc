@@ -223,6 +223,9 @@ void describe(OptionVisitor& v, localize::RealtimeOptions& o) {
   v.value("warm_up", o.warm_up,
           "every spotter reads a made-up full frame of each camera at start (the first "
           "inference costs 2-3 times a later one)");
+  v.value("first_fix_wait_ms", o.first_fix_wait_ms,
+          "live, before the first fix: how long a frame set waits for a full frame in a "
+          "worker's hands (0: no wait)");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "localize/pipeline.h"
 
 #include <algorithm>
+#include <chrono>
 #include <iterator>
 #include <map>
 
@@ -198,8 +199,11 @@ struct Pipeline::Impl {
     result.timings.filter_ms += motion_time.elapsedMs();
 
     // The workers' texts, when their turn has come (late_fusion.h).
-    collectLate(search_lane, result, result.background);
-    collectLate(read_lane, result, result.deferred_reads);
+    const auto waits_until =
+        std::chrono::steady_clock::now() +
+        std::chrono::microseconds(static_cast<long>(1e3 * options.realtime.first_fix_wait_ms));
+    collectLate(search_lane, result, result.background, waits_until);
+    collectLate(read_lane, result, result.deferred_reads, waits_until);
     const bool tracking = !options.paper_mode && isTracking(ekf, options.tracking);
 
     // 2. Read planning: map-guided regions while tracking, the full frame now and then.
@@ -325,8 +329,11 @@ struct Pipeline::Impl {
     lane.worker->submit(std::move(job));
   }
 
-  // A worker's result: waited for at its fixed turn (wait_for_worker), else taken when done.
-  void collectLate(Lane& lane, FrameResult& result, std::optional<BackgroundFusion>& fused) {
+  // A worker's result: waited for at its fixed turn (wait_for_worker), else taken when done;
+  // before the first fix a full frame is waited for until `waits_until`
+  // (RealtimeOptions::first_fix_wait_ms).
+  void collectLate(Lane& lane, FrameResult& result, std::optional<BackgroundFusion>& fused,
+                   std::chrono::steady_clock::time_point waits_until) {
     if (!lane.worker || !lane.pending) return;
     std::optional<SearchResult> done;
     const RealtimeOptions& o = options.realtime;
@@ -335,6 +342,8 @@ struct Pipeline::Impl {
       done = lane.worker->wait();
     } else {
       done = lane.worker->poll();
+      if (!done && lane.pending->full_frames && !ekf.initialised() && o.first_fix_wait_ms > 0)
+        done = lane.worker->waitUntil(waits_until);
     }
     if (!done) return;
     fuseLate(*lane.pending, *done, result, fused);

@@ -66,6 +66,17 @@ std::optional<SearchResult> SearchWorker::wait() {
   return out;
 }
 
+std::optional<SearchResult> SearchWorker::waitUntil(
+    std::chrono::steady_clock::time_point deadline) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  if (!busy_ || !changed_.wait_until(lock, deadline, [&] { return result_.has_value(); }))
+    return std::nullopt;
+  std::optional<SearchResult> out = std::move(result_);
+  result_.reset();
+  busy_ = false;
+  return out;
+}
+
 void SearchWorker::run(int nice) {
   // Linux gives each thread its own nice value; elsewhere this changes nothing that matters.
   if (nice != 0) setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), nice);

@@ -683,12 +683,14 @@ class DriveSpotter : public ocr::TextSpotter {
     if (request.regions.empty() && gate) {
       if (gate->wait_for(std::chrono::seconds(20)) != std::future_status::ready) timed_out = true;
     }
+    if (request.regions.empty()) std::this_thread::sleep_for(full_frame_delay);
     const cv::Vec3b tag = image.at<cv::Vec3b>(0, 0);
     const auto& camera = rig_.cameras[tag[0]];
     auto all = testing::spotExactly(camera, map_, drive_.truth(tag[1] / kFrameRate), {});
     return testing::inRequestedRegions(all, request);
   }
   std::optional<std::shared_future<void>> gate;
+  std::chrono::milliseconds full_frame_delay{0};  // a full frame takes at least this long
   std::atomic<bool> timed_out{false};
   std::atomic<int> full_frames{0};
   std::atomic<int> reads{0};  // regions asked to be read, not only fitted
@@ -754,6 +756,34 @@ TEST_F(PipelineTest, ASlowSearchWorkerDelaysNoFrameSet) {
   EXPECT_LT((fused->measurement->translation() -
              drive.truth(fused->capture_timestamp).translation()).norm(),
             0.01);
+}
+
+TEST_F(PipelineTest, BeforeTheFirstFixAFrameSetWaitsForTheSearchInHand) {
+  // Live, the worker spots frame set 0's full frame for 300 ms while frame set 1 comes at
+  // once. Allowed to wait for it (first_fix_wait_ms), frame set 1 fuses its texts and has the
+  // first pose; not allowed, it returns without one.
+  Drive drive;
+  const auto second_frame_set = [&](double wait_ms) {
+    DriveSpotter critical(rig, map, drive), worker(rig, map, drive);
+    worker.full_frame_delay = std::chrono::milliseconds(300);
+    PipelineOptions options;
+    options.realtime.background_search = true;
+    options.realtime.wait_for_worker = false;
+    options.realtime.first_fix_wait_ms = wait_ms;
+    Pipeline pipeline(rig, map, options, &critical, {&worker, nullptr});
+    const FrameResult first = pipeline.process(driveImages(rig, 0, frame(drive, 0)));
+    EXPECT_FALSE(first.has_pose);
+    EXPECT_EQ(first.background_cameras.size(), 1u);
+    return pipeline.process(driveImages(rig, 1, frame(drive, 1)));
+  };
+  const FrameResult waited = second_frame_set(20000.0);
+  ASSERT_TRUE(waited.has_pose);
+  ASSERT_TRUE(waited.background.has_value());
+  EXPECT_NEAR(waited.background->capture_timestamp, 0.0, 1e-9);
+  EXPECT_LT(positionError(waited, drive.truth(1 / kFrameRate)), 0.01);
+  const FrameResult not_waited = second_frame_set(0.0);
+  EXPECT_FALSE(not_waited.has_pose);
+  EXPECT_FALSE(not_waited.background.has_value());
 }
 
 TEST_F(PipelineTest, WaitingForTheSearchWorkerGivesTheSamePosesEveryRun) {

@@ -43,7 +43,7 @@ struct EvalArgs {
   bool whole_polygons = false;
   bool quiet = false;
   std::vector<double> map_noise{0.0};
-  uint64_t map_noise_seed = 0;
+  std::vector<uint64_t> map_noise_seeds{0};
   app::ConfigArgs config;
   std::string command_line;
 };
@@ -168,7 +168,7 @@ void runEval(const EvalArgs& a) {
   options.give_level = a.give_level;
   options.max_frames_per_sequence = static_cast<size_t>(a.max_frames);
   options.map_noise_levels = a.map_noise;
-  options.map_noise_seed = a.map_noise_seed;
+  options.map_noise_seeds = a.map_noise_seeds;
   options.progress = [&](const eval::Progress& p) { progress(p); };
   options.title = "parkloc evaluation: " + a.split + " split";
   options.dataset =
@@ -208,7 +208,10 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
                   "e.g. 0,0.03,0.10, gives one configuration and one report row each)")
       ->delimiter(',')
       ->check(CLI::Range(0.0, map::kMaxPositionSigmaM));
-  cmd->add_option("--map-noise-seed", args->map_noise_seed, "Seed of the map perturbation");
+  cmd->add_option("--map-noise-seed", args->map_noise_seeds,
+                  "Seed of the map perturbation (a list, e.g. 1,2,3, runs each perturbed level "
+                  "once per seed: one row each and one of them pooled)")
+      ->delimiter(',');
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   args->config.addTo(cmd);
 
@@ -264,15 +267,15 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   cmd->callback([args, ocr_cmd, avm_cmd, map_cmd] {
     if (ocr_cmd->parsed() || avm_cmd->parsed() || map_cmd->parsed()) return;
     if (args->dataset.empty()) throw CLI::RequiredError("dataset");
-    args->command_line =
-        fmt::format("parkloc eval {} --split {}{}{}{}{}{}", args->dataset, args->split,
-                    args->out.empty() ? "" : " --out " + args->out,
-                    args->max_frames ? fmt::format(" --max-frames {}", args->max_frames) : "",
-                    args->no_paper ? " --no-paper" : "", args->no_oracle ? " --no-oracle" : "",
-                    args->map_noise == std::vector<double>{0.0}
-                        ? ""
-                        : fmt::format(" --map-noise {} --map-noise-seed {}",
-                                      fmt::join(args->map_noise, ","), args->map_noise_seed));
+    args->command_line = fmt::format(
+        "parkloc eval {} --split {}{}{}{}{}{}", args->dataset, args->split,
+        args->out.empty() ? "" : " --out " + args->out,
+        args->max_frames ? fmt::format(" --max-frames {}", args->max_frames) : "",
+        args->no_paper ? " --no-paper" : "", args->no_oracle ? " --no-oracle" : "",
+        args->map_noise == std::vector<double>{0.0}
+            ? ""
+            : fmt::format(" --map-noise {} --map-noise-seed {}", fmt::join(args->map_noise, ","),
+                          fmt::join(args->map_noise_seeds, ",")));
     runEval(*args);
   });
 });

@@ -171,7 +171,7 @@ EvaluationReport evaluateSequences(const std::vector<std::string>& sequences,
         run.pipeline = std::make_unique<localize::Pipeline>(
             seq.rig(),
             tally.spec.map_noise_m > 0.0
-                ? map::perturbedMap(seq.map(), {tally.spec.map_noise_m, options.map_noise_seed})
+                ? map::perturbedMap(seq.map(), {tally.spec.map_noise_m, tally.spec.map_noise_seed})
                 : seq.map(),
             pipeline_options, tally.spec.source == Source::kSpotter ? spotter : nullptr,
             tally.spec.source == Source::kSpotter ? workers : localize::WorkerSpotters{});

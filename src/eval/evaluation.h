@@ -36,10 +36,13 @@ struct EvaluationOptions {
   // Survey error (map/map_noise.h): the main configuration (parkloc, else the oracle) runs on
   // the map perturbed by each of these position sigmas (metres), one configuration each, the
   // first being the main one itself; errors are measured against the truth all the same. The
-  // map of a garage is perturbed once per level with the same seed, so its drives share one
-  // survey.
+  // map of a garage is perturbed once per level and seed, so its drives share one survey.
+  // A perturbed level runs once per seed: one map draw decides much of a drive's error
+  // (which landmarks are off, and which way), so several draws tell the level's effect
+  // from one draw's luck; the report gives each draw a row and, with more than one, their
+  // pooled frames a row. A first level above 0 (the main configuration) takes the first seed.
   std::vector<double> map_noise_levels{0.0};
-  uint64_t map_noise_seed = 0;
+  std::vector<uint64_t> map_noise_seeds{0};
   OcrEvaluationOptions ocr_metrics;
   ProgressCallback progress;
   std::string title = "parkloc evaluation";

@@ -1,3 +1,6 @@
+#include <algorithm>
+#include <map>
+
 #include <fmt/format.h>
 
 #include "eval/evaluation_variants.h"
@@ -88,16 +91,30 @@ EvaluationReport assembleReport(const EvaluationOptions& options, const Evaluati
     report.tables.push_back(levelTable(rows));
   }
   {
-    // The main configuration at each map-noise level, when any is perturbed.
+    // The main configuration at each map-noise level and seed, when any is perturbed; a
+    // level drawn with several seeds gets a row of their frames pooled as well.
     std::vector<MapNoiseRow> rows;
     bool perturbed = false;
+    std::map<double, std::vector<const VariantTally*>> by_level;
+    const auto row = [](const VariantTally& t, const std::string& seed) {
+      MapNoiseRow r{t.spec.map_noise_m, seed, toResult(t), t.nees_frames, t.nees_inside, {}};
+      if (!t.smoothed_frames.empty()) r.smoothed = errorFromFrames(t.smoothed_frames);
+      return r;
+    };
     for (const VariantTally& t : tallies) {
       if (t.spec.key != totals.main_key && t.spec.key.rfind(totals.main_key + "_map_noise_", 0))
         continue;
-      perturbed = perturbed || t.spec.map_noise_m > 0.0;
-      MapNoiseRow row{t.spec.map_noise_m, toResult(t), t.nees_frames, t.nees_inside, {}};
-      if (!t.smoothed_frames.empty()) row.smoothed = errorFromFrames(t.smoothed_frames);
-      rows.push_back(std::move(row));
+      const bool noisy = t.spec.map_noise_m > 0.0;
+      perturbed = perturbed || noisy;
+      if (noisy) by_level[t.spec.map_noise_m].push_back(&t);
+      rows.push_back(row(t, noisy ? std::to_string(t.spec.map_noise_seed) : "-"));
+    }
+    for (const auto& [level, draws] : by_level) {
+      if (draws.size() < 2) continue;
+      const double noise = level;
+      const auto last = std::find_if(rows.rbegin(), rows.rend(),
+                                     [&](const MapNoiseRow& r) { return r.noise_m == noise; });
+      rows.insert(last.base(), row(pooledTally(draws), fmt::format("all {}", draws.size())));
     }
     if (perturbed) report.tables.push_back(mapNoiseTable(rows));
   }

@@ -10,21 +10,32 @@ namespace parkloc::eval::detail {
 
 namespace {
 // The main configuration once per map-noise level: the first level is the configuration
-// itself, each further one a copy on a perturbed map.
+// itself, each further one a copy on a perturbed map, once per seed.
 void addWithMapNoise(const VariantSpec& main, const EvaluationOptions& o,
                      std::vector<VariantSpec>& specs) {
   const std::vector<double> levels =
       o.map_noise_levels.empty() ? std::vector<double>{0.0} : o.map_noise_levels;
+  const std::vector<uint64_t> seeds =
+      o.map_noise_seeds.empty() ? std::vector<uint64_t>{0} : o.map_noise_seeds;
+  const bool several = seeds.size() > 1;
   for (size_t i = 0; i < levels.size(); ++i) {
     VariantSpec s = main;
     s.map_noise_m = levels[i];
-    if (i > 0) {
-      s.key = fmt::format("{}_map_noise_{:g}cm", main.key, levels[i] * 100.0);
-      s.title = fmt::format("{}, map noise {:g} cm", main.title, levels[i] * 100.0);
-    } else if (levels[i] > 0.0) {
-      s.title = fmt::format("{}, map noise {:g} cm", main.title, levels[i] * 100.0);
+    s.map_noise_seed = seeds.front();
+    if (i == 0) {
+      if (levels[i] > 0.0)
+        s.title = fmt::format("{}, map noise {:g} cm", main.title, levels[i] * 100.0);
+      specs.push_back(s);
+      continue;
     }
-    specs.push_back(s);
+    for (const uint64_t seed : seeds) {
+      s.map_noise_seed = seed;
+      s.key = fmt::format("{}_map_noise_{:g}cm{}", main.key, levels[i] * 100.0,
+                          several ? fmt::format("_seed{}", seed) : "");
+      s.title = fmt::format("{}, map noise {:g} cm{}", main.title, levels[i] * 100.0,
+                            several ? fmt::format(", seed {}", seed) : "");
+      specs.push_back(s);
+    }
   }
 }
 }  // namespace
@@ -77,6 +88,28 @@ std::vector<VariantSpec> variantSpecs(const EvaluationOptions& o, bool have_spot
     specs.push_back({"odometry_only", "odometry-only dead reckoning", Source::kOdometry, {}});
   }
   return specs;
+}
+
+VariantTally pooledTally(const std::vector<const VariantTally*>& tallies) {
+  VariantTally pooled;
+  if (tallies.empty()) return pooled;
+  pooled.spec = tallies.front()->spec;
+  const auto append = [](auto& to, const auto& from) {
+    to.insert(to.end(), from.begin(), from.end());
+  };
+  for (const VariantTally* t : tallies) {
+    append(pooled.frames, t->frames);
+    append(pooled.frame_tags, t->frame_tags);
+    append(pooled.timings, t->timings);
+    append(pooled.smoothed_frames, t->smoothed_frames);
+    pooled.frames_total += t->frames_total;
+    pooled.frames_with_pose += t->frames_with_pose;
+    pooled.after_fix += t->after_fix;
+    pooled.with_pose_after_fix += t->with_pose_after_fix;
+    pooled.nees_frames += t->nees_frames;
+    pooled.nees_inside += t->nees_inside;
+  }
+  return pooled;
 }
 
 VariantResult toResult(const VariantTally& t) {

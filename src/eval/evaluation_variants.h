@@ -34,6 +34,7 @@ struct VariantSpec {
   bool afm = false, mcrp = false, mcap = false;
   bool ablation = false;
   double map_noise_m = 0.0;  // the pipeline's map perturbed by this survey error (0: exact)
+  uint64_t map_noise_seed = 0;  // ... drawn with this seed
 };
 
 // What one variant accumulates over all sequences.
@@ -70,6 +71,9 @@ struct VariantRun {
 // Table 10 ablation, the paper's pipeline spotting itself, the oracle, odometry only.
 std::vector<VariantSpec> variantSpecs(const EvaluationOptions& o, bool have_spotter);
 VariantResult toResult(const VariantTally& t);
+// One tally of several configurations' frames (the draws of one map-noise level): their
+// frames, counts and smoothed frames together, under the first one's spec.
+VariantTally pooledTally(const std::vector<const VariantTally*>& tallies);
 // The trajectory error per recording condition and rotation subset (Table 8).
 std::map<std::string, TrajectoryError> conditionErrors(const VariantTally& t);
 // One drive of one configuration drawn over the map, between t0 and t1.

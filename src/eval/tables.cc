@@ -346,18 +346,24 @@ Table mapNoiseTable(const std::vector<MapNoiseRow>& rows) {
       "N(0, 1 deg x s / 10 cm), sizes x (1 + N(0, 5 %))); errors against the truth over frames "
       "with a pose. NEES: share of those frames inside the 95 % chi-square bound (3 dof). "
       "Smoothed: the same drives smoothed offline from the fixes the filter fused and the "
-      "odometry, each landmark's map error one unknown (a non-causal yardstick).";
-  t.header = {"Map noise (cm)",       "Mean error (cm)",
-              "p95 error (cm)",       "Max error (cm)",
-              "Mean yaw error (deg)", "NEES inside 95 %",
-              "Frames with pose",     "Smoothed mean / p95 / max (cm)",
+      "odometry, each landmark's map error one unknown (a non-causal yardstick). Seed: the "
+      "map draw; all N: the frames of N draws pooled.";
+  t.header = {"Map noise (cm)",
+              "Seed",
+              "Mean error (cm)",
+              "p95 error (cm)",
+              "Max error (cm)",
+              "Mean yaw error (deg)",
+              "NEES inside 95 %",
+              "Frames with pose",
+              "Smoothed mean / p95 / max (cm)",
               "Smoothed yaw (deg)"};
   for (const MapNoiseRow& r : rows) {
     const VariantResult& v = r.result;
     const Summary& e = v.error.position_m;
     t.rows.push_back(
-        {TableCell::number(r.noise_m * 100.0, 1), cm(e, &Summary::mean), cm(e, &Summary::p95),
-         cm(e, &Summary::max),
+        {TableCell::number(r.noise_m * 100.0, 1), TableCell(r.seed), cm(e, &Summary::mean),
+         cm(e, &Summary::p95), cm(e, &Summary::max),
          v.error.abs_yaw_deg.count ? TableCell::number(v.error.abs_yaw_deg.mean, 2)
                                    : TableCell("-"),
          r.nees_frames ? TableCell::percent(static_cast<double>(r.nees_inside) /

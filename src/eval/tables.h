@@ -76,6 +76,7 @@ Table table5(const std::vector<VariantResult>& variants);
 // given, its position and yaw errors, and how often its covariance was honest.
 struct MapNoiseRow {
   double noise_m = 0.0;
+  std::string seed;  // the draw's seed, "all N" for N draws pooled, "-" for the exact map
   VariantResult result;
   size_t nees_frames = 0, nees_inside = 0;
   // The drives smoothed from the same fixes and odometry (eval/drive_smoother.h).

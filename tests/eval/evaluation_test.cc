@@ -148,10 +148,30 @@ TEST_F(EvaluationTest, EachMapNoiseLevelIsAConfigurationAndARow) {
   EXPECT_EQ(table->rows[2][0].text, "10.0");
   // The drives smoothed from the fixes the filter fused (eval/drive_smoother.h): blank
   // images give no fix, so nothing to smooth.
-  EXPECT_EQ(table->header[7], "Smoothed mean / p95 / max (cm)");
-  for (const auto& row : table->rows) EXPECT_EQ(row[7].text, "-");
+  EXPECT_EQ(table->header[8], "Smoothed mean / p95 / max (cm)");
+  for (const auto& row : table->rows) EXPECT_EQ(row[8].text, "-");
   // Trajectory plots of the exact and of each perturbed map.
   EXPECT_EQ(r.trajectories.size(), 3u);
+
+  // Two draws of each perturbed level: a configuration each, a row each and one pooled.
+  options.map_noise_seeds = {1, 2};
+  const EvaluationReport two = evaluateSequences(splitSequences(root_, "test"), nullptr, options);
+  ASSERT_EQ(two.variants.size(), 5u);
+  EXPECT_EQ(two.variants[1].key, "oracle_map_noise_3cm_seed1");
+  EXPECT_EQ(two.variants[4].key, "oracle_map_noise_10cm_seed2");
+  const auto pooled = std::find_if(two.tables.begin(), two.tables.end(),
+                                   [](const Table& t) { return t.key == "map_noise"; });
+  ASSERT_NE(pooled, two.tables.end());
+  ASSERT_EQ(pooled->rows.size(), 7u);  // exact; 3 cm: 1, 2, all; 10 cm: 1, 2, all
+  EXPECT_EQ(pooled->rows[0][1].text, "-");
+  EXPECT_EQ(pooled->rows[3][0].text, "3.0");
+  EXPECT_EQ(pooled->rows[3][1].text, "all 2");
+  EXPECT_EQ(pooled->rows[5][1].text, "2");
+  // The pooled row holds both draws' frame sets.
+  const auto frame_sets = [](const TableCell& c) {
+    return std::stoi(c.text.substr(c.text.find('/') + 1));
+  };
+  EXPECT_EQ(frame_sets(pooled->rows[6][7]), 2 * frame_sets(pooled->rows[4][7]));
 }
 
 // Finds nothing; notes whether each full-frame request asked for second opinions.

@@ -759,13 +759,13 @@ TEST_F(PipelineTest, ASlowSearchWorkerDelaysNoFrameSet) {
 }
 
 TEST_F(PipelineTest, BeforeTheFirstFixAFrameSetWaitsForTheSearchInHand) {
-  // Live, the worker spots frame set 0's full frame for 300 ms while frame set 1 comes at
+  // Live, the worker spots frame set 0's full frame for a second while frame set 1 comes at
   // once. Allowed to wait for it (first_fix_wait_ms), frame set 1 fuses its texts and has the
   // first pose; not allowed, it returns without one.
   Drive drive;
   const auto second_frame_set = [&](double wait_ms) {
     DriveSpotter critical(rig, map, drive), worker(rig, map, drive);
-    worker.full_frame_delay = std::chrono::milliseconds(300);
+    worker.full_frame_delay = std::chrono::milliseconds(1000);
     PipelineOptions options;
     options.realtime.background_search = true;
     options.realtime.wait_for_worker = false;

@@ -1,6 +1,3 @@
-#include <algorithm>
-#include <map>
-
 #include <fmt/format.h>
 
 #include "eval/evaluation_variants.h"
@@ -93,29 +90,30 @@ EvaluationReport assembleReport(const EvaluationOptions& options, const Evaluati
   {
     // The main configuration at each map-noise level and seed, when any is perturbed; a
     // level drawn with several seeds gets a row of their frames pooled as well.
+    // (variantSpecs lists a level's draws one after another.)
     std::vector<MapNoiseRow> rows;
     bool perturbed = false;
-    std::map<double, std::vector<const VariantTally*>> by_level;
+    std::vector<const VariantTally*> draws;  // of the perturbed level being listed
     const auto row = [](const VariantTally& t, const std::string& seed) {
       MapNoiseRow r{t.spec.map_noise_m, seed, toResult(t), t.nees_frames, t.nees_inside, {}};
       if (!t.smoothed_frames.empty()) r.smoothed = errorFromFrames(t.smoothed_frames);
       return r;
+    };
+    const auto pool = [&] {
+      if (draws.size() > 1)
+        rows.push_back(row(pooledTally(draws), fmt::format("all {}", draws.size())));
+      draws.clear();
     };
     for (const VariantTally& t : tallies) {
       if (t.spec.key != totals.main_key && t.spec.key.rfind(totals.main_key + "_map_noise_", 0))
         continue;
       const bool noisy = t.spec.map_noise_m > 0.0;
       perturbed = perturbed || noisy;
-      if (noisy) by_level[t.spec.map_noise_m].push_back(&t);
+      if (!draws.empty() && draws.front()->spec.map_noise_m != t.spec.map_noise_m) pool();
       rows.push_back(row(t, noisy ? std::to_string(t.spec.map_noise_seed) : "-"));
+      if (noisy) draws.push_back(&t);
     }
-    for (const auto& [level, draws] : by_level) {
-      if (draws.size() < 2) continue;
-      const double noise = level;
-      const auto last = std::find_if(rows.rbegin(), rows.rend(),
-                                     [&](const MapNoiseRow& r) { return r.noise_m == noise; });
-      rows.insert(last.base(), row(pooledTally(draws), fmt::format("all {}", draws.size())));
-    }
+    pool();
     if (perturbed) report.tables.push_back(mapNoiseTable(rows));
   }
   for (const VariantTally& t : tallies) report.variants.push_back(toResult(t));

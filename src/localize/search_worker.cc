@@ -49,28 +49,26 @@ void SearchWorker::submit(SearchJob job) {
 
 std::optional<SearchResult> SearchWorker::poll() {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!result_) return std::nullopt;
-  std::optional<SearchResult> out = std::move(result_);
-  result_.reset();
-  busy_ = false;
-  return out;
+  return takeResult();
 }
 
 std::optional<SearchResult> SearchWorker::wait() {
   std::unique_lock<std::mutex> lock(mutex_);
   if (!busy_) return std::nullopt;
   changed_.wait(lock, [&] { return result_.has_value(); });
-  std::optional<SearchResult> out = std::move(result_);
-  result_.reset();
-  busy_ = false;
-  return out;
+  return takeResult();
 }
 
 std::optional<SearchResult> SearchWorker::waitUntil(
     std::chrono::steady_clock::time_point deadline) {
   std::unique_lock<std::mutex> lock(mutex_);
-  if (!busy_ || !changed_.wait_until(lock, deadline, [&] { return result_.has_value(); }))
-    return std::nullopt;
+  if (!busy_) return std::nullopt;
+  changed_.wait_until(lock, deadline, [&] { return result_.has_value(); });
+  return takeResult();
+}
+
+std::optional<SearchResult> SearchWorker::takeResult() {
+  if (!result_) return std::nullopt;
   std::optional<SearchResult> out = std::move(result_);
   result_.reset();
   busy_ = false;

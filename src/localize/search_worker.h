@@ -117,6 +117,9 @@ class SearchWorker {
  private:
   void run(int nice);
   SearchResult spot(const SearchJob& job) const;
+  // The finished result, handed over (the worker free again); nullopt when there is none.
+  // With mutex_ held.
+  std::optional<SearchResult> takeResult();
 
   ocr::TextSpotter* spotter_;
   mutable std::mutex mutex_;

@@ -211,7 +211,8 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--map-noise-seed", args->map_noise_seeds,
                   "Seed of the map perturbation (a list, e.g. 1,2,3, runs each perturbed level "
                   "once per seed: one row each and one of them pooled)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   args->config.addTo(cmd);
 

@@ -134,7 +134,8 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
                   "Localize on the map perturbed by this survey error (metres, 1 sigma per axis; "
                   "see map/map_noise.h); the error is measured against the truth")
       ->check(CLI::Range(0.0, parkloc::map::kMaxPositionSigmaM));
-  cmd->add_option("--map-noise-seed", args->map_noise_seed, "Seed of the map perturbation");
+  cmd->add_option("--map-noise-seed", args->map_noise_seed, "Seed of the map perturbation")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--quiet", args->quiet, "No progress line");
   cmd->add_flag("--realtime", args->realtime,
                 "Feed the frame sets at their recorded rate; a frame set that comes while the "

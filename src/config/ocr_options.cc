@@ -139,6 +139,8 @@ void describe(OptionVisitor& v, ocr::CornerRefinementOptions& o) {
   v.value("denoise_sigma_raw_px", o.denoise_sigma_raw_px,
           "smoothing in raw pixels before thresholding: sensor noise is per raw pixel");
   v.value("min_contrast", o.min_contrast, "ink and floor differ by at least this, grey levels");
+  v.value("colour_fallback", o.colour_fallback,
+          "where grey levels find no text, ink is what lies far from the floor's colour");
   v.value("min_length_share", o.min_length_share,
           "a fit shorter than this share of its box lost part of the text: box kept");
 }

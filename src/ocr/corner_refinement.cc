@@ -14,33 +14,30 @@ struct InkMask {
   cv::Mat image_from_crop;
 };
 
-std::optional<InkMask> inkMask(const cv::Mat& image, const Quad& detected,
-                               const CornerRefinementOptions& options) {
-  const Quad quad = expandQuad(detected, options.search_expand_x, options.search_expand_y);
-  const int h = options.crop_height;
-  const int w = std::clamp(
-      static_cast<int>(std::lround(quadWidth(quad) / std::max(quadHeight(quad), 1.f) * h)), 8,
-      16 * h);
-  const cv::Mat crop_from_image = rectifyingHomography(quad, w, h);
-  cv::Mat crop, gray;
-  cv::warpPerspective(image, crop, crop_from_image, {w, h}, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
-  cv::cvtColor(crop, gray, cv::COLOR_BGR2GRAY);
-  const double crop_px_per_raw_px = h / std::max(quadHeight(quad), 1.f);
-  const double sigma = options.denoise_sigma_raw_px * crop_px_per_raw_px;
-  if (sigma >= 0.3) cv::GaussianBlur(gray, gray, {0, 0}, sigma);
+// The ink in `channel` (crop pixels, 8-bit): Otsu's split, `ink_is_bright` or the side the
+// border is not on (DB's box leaves a margin of background around the text); nullopt when ink
+// and background means differ by less than min_contrast.
+std::optional<cv::Mat> splitInk(const cv::Mat& channel, std::optional<bool> ink_is_bright,
+                                const CornerRefinementOptions& options) {
+  const int h = channel.rows, w = channel.cols;
   cv::Mat binary;
-  const double threshold = cv::threshold(gray, binary, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
-  // Polarity: the crop's border is background (DB's box leaves a margin around the text).
-  cv::Mat border = cv::Mat::ones(h, w, CV_8U) * 255;
-  border(cv::Rect(2, 2, std::max(w - 4, 1), std::max(h - 4, 1))).setTo(0);
-  const double border_mean = cv::mean(gray, border)[0];
-  if (border_mean > threshold) cv::bitwise_not(binary, binary);
-  // Contrast check: ink and background means must differ clearly.
-  const double ink_mean = cv::mean(gray, binary)[0], bg_mean = cv::mean(gray, ~binary)[0];
+  const double threshold =
+      cv::threshold(channel, binary, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
+  if (!ink_is_bright) {
+    cv::Mat border = cv::Mat::ones(h, w, CV_8U) * 255;
+    border(cv::Rect(2, 2, std::max(w - 4, 1), std::max(h - 4, 1))).setTo(0);
+    ink_is_bright = cv::mean(channel, border)[0] <= threshold;
+  }
+  if (!*ink_is_bright) cv::bitwise_not(binary, binary);
+  const double ink_mean = cv::mean(channel, binary)[0], bg_mean = cv::mean(channel, ~binary)[0];
   if (std::abs(ink_mean - bg_mean) < options.min_contrast) return std::nullopt;
+  return binary;
+}
 
-  // Keep components that do not touch the crop's border (slot lines, neighbours), unless
-  // that leaves nothing.
+// The components of `binary` that do not touch the crop's border (slot lines, neighbours, a
+// car's shadow), or nullopt when they leave too little to be a text.
+std::optional<cv::Mat> innerComponents(const cv::Mat& binary) {
+  const int h = binary.rows, w = binary.cols;
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(binary, labels, stats, centroids, 8, CV_32S);
   cv::Mat keep = cv::Mat::zeros(h, w, CV_8U);
@@ -55,7 +52,62 @@ std::optional<InkMask> inkMask(const cv::Mat& image, const Quad& detected,
     kept_area += area;
   }
   if (kept_area < h * h / 20) return std::nullopt;
-  return InkMask{keep, crop_from_image.inv()};
+  return keep;
+}
+
+// How far each pixel's chroma lies from the floor's: the median colour of the crop's border
+// (distance in CIE Lab's a* b*, 8-bit). Yellow paint on grey concrete differs from it in
+// colour more than in brightness, and the colourless dark of a car's bumper or shadow at the
+// crop's edge, which takes a grey-level split for itself and leaves the paint with the floor,
+// stays with the floor here.
+cv::Mat colourDistance(const cv::Mat& crop, double sigma) {
+  cv::Mat lab;
+  cv::cvtColor(crop, lab, cv::COLOR_BGR2Lab);
+  if (sigma >= 0.3) cv::GaussianBlur(lab, lab, {0, 0}, sigma);
+  std::vector<cv::Vec3b> border;
+  for (int y = 0; y < lab.rows; ++y)
+    for (int x = 0; x < lab.cols; ++x)
+      if (y < 2 || x < 2 || y >= lab.rows - 2 || x >= lab.cols - 2)
+        border.push_back(lab.at<cv::Vec3b>(y, x));
+  cv::Vec3f floor;
+  for (int c = 0; c < 3; ++c) {
+    std::vector<uchar> v;
+    v.reserve(border.size());
+    for (const auto& p : border) v.push_back(p[c]);
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+    floor[c] = v[v.size() / 2];
+  }
+  cv::Mat distance(lab.size(), CV_8U);
+  for (int y = 0; y < lab.rows; ++y)
+    for (int x = 0; x < lab.cols; ++x) {
+      const cv::Vec3b p = lab.at<cv::Vec3b>(y, x);
+      const float d = std::hypot(p[1] - floor[1], p[2] - floor[2]);
+      distance.at<uchar>(y, x) = cv::saturate_cast<uchar>(d);
+    }
+  return distance;
+}
+
+std::optional<InkMask> inkMask(const cv::Mat& image, const Quad& detected,
+                               const CornerRefinementOptions& options) {
+  const Quad quad = expandQuad(detected, options.search_expand_x, options.search_expand_y);
+  const int h = options.crop_height;
+  const int w = std::clamp(
+      static_cast<int>(std::lround(quadWidth(quad) / std::max(quadHeight(quad), 1.f) * h)), 8,
+      16 * h);
+  const cv::Mat crop_from_image = rectifyingHomography(quad, w, h);
+  cv::Mat crop, gray;
+  cv::warpPerspective(image, crop, crop_from_image, {w, h}, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  cv::cvtColor(crop, gray, cv::COLOR_BGR2GRAY);
+  const double crop_px_per_raw_px = h / std::max(quadHeight(quad), 1.f);
+  const double sigma = options.denoise_sigma_raw_px * crop_px_per_raw_px;
+  if (sigma >= 0.3) cv::GaussianBlur(gray, gray, {0, 0}, sigma);
+  // Grey levels first; where they find no text, the distance from the floor's colour.
+  if (const auto binary = splitInk(gray, std::nullopt, options))
+    if (auto keep = innerComponents(*binary)) return InkMask{*keep, crop_from_image.inv()};
+  if (!options.colour_fallback || crop.channels() != 3) return std::nullopt;
+  if (const auto binary = splitInk(colourDistance(crop, sigma), true, options))
+    if (auto keep = innerComponents(*binary)) return InkMask{*keep, crop_from_image.inv()};
+  return std::nullopt;
 }
 
 }  // namespace

@@ -29,6 +29,9 @@ struct CornerRefinementOptions {
   // checks, not a contrast floor, keep noise out.
   double denoise_sigma_raw_px = 1.0;
   double min_contrast = 8.0;
+  // Where grey levels find no text (yellow paint on grey concrete beside a car's shadow), the
+  // ink is looked for as the pixels whose colour lies far from the floor's.
+  bool colour_fallback = true;
   // A fit shorter along the reading direction than this share of the box it refines has
   // lost part of the text (blurred glyphs whose ink breaks apart), not tightened the box,
   // which is then kept as it is: DB's boxes, unclipped, are about as long as the text.

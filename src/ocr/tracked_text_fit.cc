@@ -6,8 +6,9 @@ namespace parkloc::ocr {
 
 std::optional<Quad> fitTrackedText(const cv::Mat& image, const Quad& predicted,
                                    const geometry::RigCamera* camera,
-                                   const TrackedFitOptions& options) {
-  CornerRefinementOptions refinement;
+                                   const TrackedFitOptions& options,
+                                   const CornerRefinementOptions& ink) {
+  CornerRefinementOptions refinement = ink;
   refinement.search_expand_x = options.search_expand_x;
   refinement.search_expand_y = options.search_expand_y;
   refinement.crop_height = options.crop_height;

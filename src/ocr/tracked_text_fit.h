@@ -28,9 +28,11 @@ struct TrackedFitOptions {
 
 // The ink's corners (reading order of `predicted`) around the predicted text quad: on the
 // ground plane when `camera` is given and the text lies on the floor, else in the
-// rectified crop. Empty when no ink of the predicted size and place is found.
+// rectified crop. Empty when no ink of the predicted size and place is found. `ink` says how
+// ink is told from the floor (its search window and crop come from `options`).
 std::optional<Quad> fitTrackedText(const cv::Mat& image, const Quad& predicted,
                                    const geometry::RigCamera* camera,
-                                   const TrackedFitOptions& options = {});
+                                   const TrackedFitOptions& options = {},
+                                   const CornerRefinementOptions& ink = {});
 
 }  // namespace parkloc::ocr

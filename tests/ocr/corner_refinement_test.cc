@@ -1,7 +1,13 @@
-// The spotter keeps a corner fit only when it is plausible for the box it refines.
+// The corner fit finds the text's ink, and the spotter keeps a fit only when it is plausible
+// for the box it refines.
 #include "ocr/corner_refinement.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "synthetic_text.h"
 
 namespace parkloc::ocr {
 namespace {
@@ -30,6 +36,57 @@ TEST(PlausibleRefinement, AFitOutsideTheGrownBoxIsNot) {
   const Quad detected = box(100, 100, 300, 150);
   EXPECT_FALSE(plausibleRefinement(detected, box(100, 100, 300, 200)));  // runs off below
   EXPECT_FALSE(plausibleRefinement(detected, box(200, 100, 400, 150)));  // shifted along
+}
+
+// Yellow paint on grey concrete whose glyph tops touch a car's dark bumper: the grey levels
+// split bumper from floor and leave the paint, about as bright as the concrete, with the
+// floor. Returns the image and the ink's box.
+struct BumperScene {
+  cv::Mat image;
+  cv::Rect ink;
+};
+BumperScene yellowTextUnderABumper() {
+  const cv::Scalar concrete(150, 150, 150), yellow(40, 170, 200);  // BGR, luminance ~155
+  const cv::Mat line = testing::renderTextLine("P2-069", 40, 0, yellow, concrete);
+  BumperScene scene;
+  scene.image = cv::Mat(160, line.cols + 120, CV_8UC3, concrete);
+  scene.ink = cv::Rect(60, 70, line.cols, line.rows);
+  line.copyTo(scene.image(scene.ink));
+  // The bumper's shadow reaches 2 px into the glyphs' tops, across the whole crop.
+  scene.image(cv::Rect(0, 0, scene.image.cols, 72)).setTo(cv::Scalar(25, 25, 25));
+  line(cv::Rect(0, 2, line.cols, line.rows - 2))
+      .copyTo(scene.image(cv::Rect(60, 72, line.cols, line.rows - 2)));
+  return scene;
+}
+
+double meanCornerDistance(const Quad& a, const Quad& b) {
+  double sum = 0.0;
+  for (int i = 0; i < 4; ++i) sum += std::hypot(a[i].x - b[i].x, a[i].y - b[i].y);
+  return sum / 4.0;
+}
+
+TEST(RefineInCrop, YellowPaintBesideADarkShadowIsFoundByItsColour) {
+  const BumperScene scene = yellowTextUnderABumper();
+  const cv::Rect& r = scene.ink;
+  // A detector box loose by 8 px on every side.
+  const Quad detected = box(r.x - 8, r.y - 8, r.x + r.width + 8, r.y + r.height + 8);
+  // The visible ink: its top two rows lie in the shadow.
+  const Quad truth = box(r.x - 0.5f, r.y + 1.5f, r.x + r.width - 0.5f, r.y + r.height - 0.5f);
+
+  CornerRefinementOptions grey_only;
+  grey_only.colour_fallback = false;
+  EXPECT_FALSE(refineInCrop(scene.image, detected, grey_only).has_value());
+
+  const auto fit = refineInCrop(scene.image, detected);
+  ASSERT_TRUE(fit.has_value());
+  EXPECT_LT(meanCornerDistance(*fit, truth), 2.5);
+  EXPECT_GT(meanCornerDistance(detected, truth), 6.0);
+}
+
+TEST(RefineInCrop, ColourlessBlankFloorGivesNoFit) {
+  cv::Mat floor(120, 400, CV_8UC3, cv::Scalar(150, 150, 150));
+  floor(cv::Rect(0, 0, 400, 40)).setTo(cv::Scalar(25, 25, 25));
+  EXPECT_FALSE(refineInCrop(floor, box(100, 50, 300, 90)).has_value());
 }
 
 }  // namespace

@@ -162,8 +162,8 @@ std::vector<TextInstance> PpOcrSpotter::spotRegions(const cv::Mat& image,
       continue;
     }
     if (region.expected_texts.empty()) continue;
-    const auto fitted =
-        fitTrackedText(image, region.predicted, request.camera, options_.regions.tracked_fit);
+    const auto fitted = fitTrackedText(image, region.predicted, request.camera,
+                                       options_.regions.tracked_fit, options_.corners.fit);
     if (!fitted) continue;
     TextInstance inst;
     inst.polygon = *fitted;

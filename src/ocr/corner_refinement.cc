@@ -14,20 +14,33 @@ struct InkMask {
   cv::Mat image_from_crop;
 };
 
+// The crop's outer two pixels: background, as DB's box leaves a margin around the text.
+cv::Mat borderMask(cv::Size size) {
+  cv::Mat border(size, CV_8U, cv::Scalar(255));
+  border(cv::Rect(2, 2, std::max(size.width - 4, 1), std::max(size.height - 4, 1))).setTo(0);
+  return border;
+}
+
+// The median of an 8-bit channel's pixels under `mask`.
+uchar medianUnder(const cv::Mat& channel, const cv::Mat& mask) {
+  std::vector<uchar> v;
+  for (int y = 0; y < channel.rows; ++y)
+    for (int x = 0; x < channel.cols; ++x)
+      if (mask.at<uchar>(y, x)) v.push_back(channel.at<uchar>(y, x));
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
 // The ink in `channel` (crop pixels, 8-bit): Otsu's split, `ink_is_bright` or the side the
 // border is not on (DB's box leaves a margin of background around the text); nullopt when ink
 // and background means differ by less than min_contrast.
 std::optional<cv::Mat> splitInk(const cv::Mat& channel, std::optional<bool> ink_is_bright,
                                 const CornerRefinementOptions& options) {
-  const int h = channel.rows, w = channel.cols;
   cv::Mat binary;
   const double threshold =
       cv::threshold(channel, binary, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
-  if (!ink_is_bright) {
-    cv::Mat border = cv::Mat::ones(h, w, CV_8U) * 255;
-    border(cv::Rect(2, 2, std::max(w - 4, 1), std::max(h - 4, 1))).setTo(0);
-    ink_is_bright = cv::mean(channel, border)[0] <= threshold;
-  }
+  if (!ink_is_bright) ink_is_bright = cv::mean(channel, borderMask(channel.size()))[0] <= threshold;
   if (!*ink_is_bright) cv::bitwise_not(binary, binary);
   const double ink_mean = cv::mean(channel, binary)[0], bg_mean = cv::mean(channel, ~binary)[0];
   if (std::abs(ink_mean - bg_mean) < options.min_contrast) return std::nullopt;
@@ -63,28 +76,19 @@ std::optional<cv::Mat> innerComponents(const cv::Mat& binary) {
 cv::Mat colourDistance(const cv::Mat& crop, double sigma) {
   cv::Mat lab;
   cv::cvtColor(crop, lab, cv::COLOR_BGR2Lab);
-  if (sigma >= 0.3) cv::GaussianBlur(lab, lab, {0, 0}, sigma);
-  std::vector<cv::Vec3b> border;
-  for (int y = 0; y < lab.rows; ++y)
-    for (int x = 0; x < lab.cols; ++x)
-      if (y < 2 || x < 2 || y >= lab.rows - 2 || x >= lab.cols - 2)
-        border.push_back(lab.at<cv::Vec3b>(y, x));
-  cv::Vec3f floor;
-  for (int c = 0; c < 3; ++c) {
-    std::vector<uchar> v;
-    v.reserve(border.size());
-    for (const auto& p : border) v.push_back(p[c]);
-    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-    floor[c] = v[v.size() / 2];
+  std::vector<cv::Mat> channels;
+  cv::split(lab, channels);
+  const cv::Mat border = borderMask(crop.size());
+  cv::Mat from_floor[2];  // a*, b* less the floor's
+  for (int c = 0; c < 2; ++c) {
+    cv::Mat& channel = channels[static_cast<size_t>(c + 1)];
+    if (sigma >= 0.3) cv::GaussianBlur(channel, channel, {0, 0}, sigma);
+    channel.convertTo(from_floor[c], CV_32F, 1.0, -medianUnder(channel, border));
   }
-  cv::Mat distance(lab.size(), CV_8U);
-  for (int y = 0; y < lab.rows; ++y)
-    for (int x = 0; x < lab.cols; ++x) {
-      const cv::Vec3b p = lab.at<cv::Vec3b>(y, x);
-      const float d = std::hypot(p[1] - floor[1], p[2] - floor[2]);
-      distance.at<uchar>(y, x) = cv::saturate_cast<uchar>(d);
-    }
-  return distance;
+  cv::Mat distance, out;
+  cv::magnitude(from_floor[0], from_floor[1], distance);
+  distance.convertTo(out, CV_8U);
+  return out;
 }
 
 std::optional<InkMask> inkMask(const cv::Mat& image, const Quad& detected,
@@ -104,7 +108,7 @@ std::optional<InkMask> inkMask(const cv::Mat& image, const Quad& detected,
   // Grey levels first; where they find no text, the distance from the floor's colour.
   if (const auto binary = splitInk(gray, std::nullopt, options))
     if (auto keep = innerComponents(*binary)) return InkMask{*keep, crop_from_image.inv()};
-  if (!options.colour_fallback || crop.channels() != 3) return std::nullopt;
+  if (!options.colour_fallback) return std::nullopt;
   if (const auto binary = splitInk(colourDistance(crop, sigma), true, options))
     if (auto keep = innerComponents(*binary)) return InkMask{*keep, crop_from_image.inv()};
   return std::nullopt;

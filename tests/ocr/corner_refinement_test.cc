@@ -51,7 +51,6 @@ BumperScene yellowTextUnderABumper() {
   BumperScene scene;
   scene.image = cv::Mat(160, line.cols + 120, CV_8UC3, concrete);
   scene.ink = cv::Rect(60, 70, line.cols, line.rows);
-  line.copyTo(scene.image(scene.ink));
   // The bumper's shadow reaches 2 px into the glyphs' tops, across the whole crop.
   scene.image(cv::Rect(0, 0, scene.image.cols, 72)).setTo(cv::Scalar(25, 25, 25));
   line(cv::Rect(0, 2, line.cols, line.rows - 2))

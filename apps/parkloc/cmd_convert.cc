@@ -17,9 +17,12 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
       "convert", "Write a sequence's image folders as one video per camera (videos/ layout)");
   cmd->add_option("sequence", args->sequence, "Sequence folder")->required();
   cmd->add_option("--out", args->out, "New sequence folder")->required();
-  cmd->add_option("--fourcc", args->video.fourcc, "Codec FourCC (MJPG, mp4v, ...)")
+  cmd->add_option("--fourcc", args->video.fourcc, "Codec FourCC (MJPG, avc1 for H.264, mp4v, ...)")
       ->capture_default_str();
   cmd->add_option("--ext", args->video.extension, "Video file extension (.avi, .mp4, ...)")
+      ->capture_default_str();
+  cmd->add_option("--quality", args->video.mjpeg_quality, "JPEG quality of MJPG frames (1-100)")
+      ->check(CLI::Range(1, 100))
       ->capture_default_str();
   cmd->add_option("--fps", args->video.fps, "Nominal frame rate of the container")
       ->check(CLI::PositiveNumber)

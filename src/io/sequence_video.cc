@@ -18,6 +18,8 @@ void writeSequenceVideos(const Sequence& sequence, const std::string& out_dir,
     throw InputError(fmt::format("{}: exists and is not an empty folder", out_dir));
   if (options.fourcc.size() != 4)
     throw InputError(fmt::format("codec '{}' is not a FourCC", options.fourcc));
+  if (options.mjpeg_quality < 1 || options.mjpeg_quality > 100)
+    throw InputError(fmt::format("JPEG quality {} is not in 1-100", options.mjpeg_quality));
   fs::create_directories(out / "videos");
   const fs::path in(sequence.dir());
   for (const char* file : {"calib.yaml", "map.geojson", "odometry.csv", "poses.tum",
@@ -28,6 +30,8 @@ void writeSequenceVideos(const Sequence& sequence, const std::string& out_dir,
 
   const int fourcc = cv::VideoWriter::fourcc(options.fourcc[0], options.fourcc[1],
                                              options.fourcc[2], options.fourcc[3]);
+  const bool mjpeg = options.fourcc == "MJPG";
+  const int backend = mjpeg ? cv::CAP_OPENCV_MJPEG : cv::CAP_FFMPEG;
   for (const std::string& camera : sequence.cameras()) {
     const fs::path video = out / "videos" / (camera + options.extension);
     std::ofstream csv(out / "videos" / (camera + ".csv"));
@@ -39,10 +43,12 @@ void writeSequenceVideos(const Sequence& sequence, const std::string& out_dir,
       if (!t) continue;
       const cv::Mat image = sequence.loadImage(i, camera);
       if (image.empty()) continue;
-      if (!writer.isOpened() &&
-          !writer.open(video.string(), cv::CAP_FFMPEG, fourcc, options.fps, image.size()))
-        throw InputError(fmt::format("{}: cannot write codec {} ({})", video.string(),
-                                     options.fourcc, options.extension));
+      if (!writer.isOpened()) {
+        if (!writer.open(video.string(), backend, fourcc, options.fps, image.size()))
+          throw InputError(fmt::format("{}: cannot write codec {} ({})", video.string(),
+                                       options.fourcc, options.extension));
+        if (mjpeg) writer.set(cv::VIDEOWRITER_PROP_QUALITY, options.mjpeg_quality);
+      }
       writer.write(image);
       csv << fmt::format("{},{:.6f}\n", written++, *t);
     }

@@ -120,9 +120,13 @@ cv::Mat drawRunFrame(const VisualizationInput& input, const map::HdMap& map,
                      const BirdsEyeView& bev) {
   const localize::FrameResult& result = *input.result;
   cv::Mat canvas(2 * kViewHeight, 2 * kViewWidth + bev.size_px, CV_8UC3, cv::Scalar(30, 30, 30));
-  for (size_t c = 0; c < result.cameras.size() && c < 4; ++c) {
+  // Two columns and as many rows as the rig needs (a rig has 2 to 6 cameras) in the height of
+  // two 640x400 views, so every rig's video has the same frame size.
+  const int rows = std::max(2, static_cast<int>((result.cameras.size() + 1) / 2));
+  const int tile_height = 2 * kViewHeight / rows;
+  for (size_t c = 0; c < result.cameras.size(); ++c) {
     const cv::Rect where(static_cast<int>(c % 2) * kViewWidth,
-                         static_cast<int>(c / 2) * kViewHeight, kViewWidth, kViewHeight);
+                         static_cast<int>(c / 2) * tile_height, kViewWidth, tile_height);
     drawCamera(canvas, where, c < input.images.size() ? input.images[c] : cv::Mat(),
                result.cameras[c], result);
   }

@@ -1,5 +1,5 @@
 #pragma once
-// The annotated frame of `parkloc run --video`: the four camera views with the spotted
+// The annotated frame of `parkloc run --video`: the rig's camera views with the spotted
 // text (green: used, red: rejected, with the reason) and a bird's-eye view of the map with
 // the estimated and (when known) true trajectory.
 #include <opencv2/core.hpp>
@@ -35,7 +35,8 @@ struct VisualizationInput {
   size_t dropped_so_far = 0;
 };
 
-// A 8-bit BGR frame: a 2x2 grid of camera views (each 640x400) and the bird's-eye view.
+// A 8-bit BGR frame: the camera views in two columns 640 px wide (two rows of 400 px for up to
+// four cameras, three of 266 px for five or six) and the bird's-eye view.
 cv::Mat drawRunFrame(const VisualizationInput& input, const map::HdMap& map,
                      const BirdsEyeView& view);
 

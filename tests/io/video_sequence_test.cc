@@ -2,10 +2,12 @@
 // and every broken input gives one line.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
 #include "common/error.h"
@@ -112,7 +114,7 @@ TEST_F(VideoSequenceTest, BrokenRecordingsAreOneLineErrors) {
 TEST_F(VideoSequenceTest, ADamagedFrameIsAnEmptyImageWithAReasonAndTheOthersStayInPlace) {
   makeImageSequence(dir_ / "images_seq", 8);
   writeSequenceVideos(Sequence((dir_ / "images_seq").string()), path("seq"));
-  // Zeros over the fourth frame's data in the front video (the AVI chunk "00dc" holds one
+  // Zeros over all of the fourth frame's data in the front video (the AVI chunk "00dc" holds one
   // compressed frame): it cannot be decoded; every frame that is decoded is the one asked for
   // (no frame slips into another's place).
   const fs::path video = dir_ / "seq/videos/front.avi";
@@ -122,9 +124,13 @@ TEST_F(VideoSequenceTest, ADamagedFrameIsAnEmptyImageWithAReasonAndTheOthersStay
     size_t chunk = bytes.find("movi");
     for (int k = 0; k < 4 && chunk != std::string::npos; ++k) chunk = bytes.find("00dc", chunk + 4);
     ASSERT_NE(chunk, std::string::npos);
+    uint32_t size = 0;  // the chunk's little-endian length follows its four-letter name
+    for (int b = 3; b >= 0; --b)
+      size = size << 8 | static_cast<unsigned char>(bytes[chunk + 4 + b]);
+    ASSERT_GT(size, 0u);
     std::fstream f(video, std::ios::in | std::ios::out | std::ios::binary);
     f.seekp(static_cast<std::streamoff>(chunk + 8));
-    const std::string zeros(200, '\0');
+    const std::string zeros(size, '\0');
     f.write(zeros.data(), static_cast<std::streamsize>(zeros.size()));
   }
   const Sequence seq(path("seq"));
@@ -144,6 +150,34 @@ TEST_F(VideoSequenceTest, ADamagedFrameIsAnEmptyImageWithAReasonAndTheOthersStay
   EXPECT_EQ(decoded, 7);
   EXPECT_EQ(failed, 1);
   EXPECT_FALSE(seq.loadImage(7, "rear").empty());
+}
+
+TEST_F(VideoSequenceTest, MjpegQualityIsTheJpegQualityOfEachFrame) {
+  // A textured frame (fine detail is what a coarser JPEG loses).
+  const fs::path root = dir_ / "textured";
+  makeImageSequence(root, 2);
+  cv::Mat grey(120, 160, CV_8U), texture;
+  cv::randu(grey, 0, 255);
+  cv::GaussianBlur(grey, grey, cv::Size(), 1.0);
+  cv::cvtColor(grey, texture, cv::COLOR_GRAY2BGR);
+  for (const char* camera : {"front", "rear"})
+    for (const auto& file : fs::directory_iterator(root / "images" / camera))
+      cv::imwrite(file.path().string(), texture);
+  const Sequence images(root.string());
+  SequenceVideoOptions coarse, fine;
+  coarse.mjpeg_quality = 20;
+  fine.mjpeg_quality = 95;
+  writeSequenceVideos(images, path("coarse"), coarse);
+  writeSequenceVideos(images, path("fine"), fine);
+  EXPECT_LT(fs::file_size(dir_ / "coarse/videos/front.avi"),
+            fs::file_size(dir_ / "fine/videos/front.avi"));
+  const double coarse_db = cv::PSNR(Sequence(path("coarse")).loadImage(0, "front"), texture);
+  const double fine_db = cv::PSNR(Sequence(path("fine")).loadImage(0, "front"), texture);
+  EXPECT_GT(fine_db, coarse_db + 3.0);
+
+  SequenceVideoOptions invalid;
+  invalid.mjpeg_quality = 0;
+  EXPECT_THROW(writeSequenceVideos(images, path("invalid"), invalid), InputError);
 }
 
 TEST(VideoTimestamps, ListsFramesWithTheirTimes) {

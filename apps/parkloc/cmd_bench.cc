@@ -5,14 +5,18 @@
 // ratios to the paper pipeline's median latency (the machine's speed cancels out).
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
+#include <iterator>
 
 #include "apps/parkloc/command.h"
 #include "apps/parkloc/config_args.h"
 #include "apps/parkloc/progress_line.h"
 #include "eval/evaluation.h"
 #include "eval/report.h"
+#include "eval/statistics.h"
 #include "eval/tables.h"
 #include "io/sequence.h"
 #include "run/sequence_runner.h"
@@ -27,11 +31,72 @@ struct BenchArgs {
   std::string out;
   bool no_paper = false;
   bool no_replay = false;
+  int replays = 1;
   bool quiet = false;
   app::ConfigArgs config;
 };
 
-// The drive at its recorded rate, with the heavy work inside the frame set and on workers.
+// Where the heavy work of a replay runs: inside the frame set; full frames on the search worker;
+// full frames and the reads at predicted places on workers (localize/search_worker.h).
+struct ReplayMode {
+  const char* name;
+  const char* folder;
+  bool search, reads;
+};
+constexpr ReplayMode kReplayModes[] = {{"in the frame set", "replay_synchronous", false, false},
+                                       {"search worker", "replay_worker", true, false},
+                                       {"search and read workers", "replay_workers", true, true}};
+
+std::string ratioTo(double paper_median_ms, double ms) {
+  return paper_median_ms > 0.0 ? fmt::format("{:.3f}", ms / paper_median_ms) : std::string("-");
+}
+
+// One table row: one replay, or the replays of one mode together (ages pooled, errors averaged
+// over the replays with a pose, the first pose's range).
+void printReplayRow(const std::string& label, const std::vector<run::RunSummary>& runs,
+                    double paper_median_ms) {
+  std::vector<double> ages;
+  size_t dropped = 0, frames = 0;
+  double error_mean = 0.0, error_p95 = 0.0, first_lo = 1e300, first_hi = -1e300;
+  size_t first_frame_lo = SIZE_MAX, first_frame_hi = 0, posed = 0;
+  for (const run::RunSummary& s : runs) {
+    ages.insert(ages.end(), s.pose_age_ms.begin(), s.pose_age_ms.end());
+    dropped += s.frames_dropped;
+    frames += s.frames + s.frames_dropped;
+    if (!s.first_pose_frame) continue;
+    ++posed;
+    error_mean += s.mean_position_error_m;
+    error_p95 += s.p95_position_error_m;
+    first_lo = std::min(first_lo, s.first_pose_output_ms);
+    first_hi = std::max(first_hi, s.first_pose_output_ms);
+    first_frame_lo = std::min(first_frame_lo, *s.first_pose_frame);
+    first_frame_hi = std::max(first_frame_hi, *s.first_pose_frame);
+  }
+  const auto q = [&](double p) { return ages.empty() ? 0.0 : eval::percentile(ages, p); };
+  // Errors over the replays that gave a pose.
+  if (posed > 0) error_mean /= static_cast<double>(posed), error_p95 /= static_cast<double>(posed);
+  const auto range = [](double lo, double hi) {
+    return lo == hi ? fmt::format("{:.0f}", lo) : fmt::format("{:.0f}-{:.0f}", lo, hi);
+  };
+  std::string first = "none";
+  if (posed > 0)
+    first =
+        fmt::format("frame set {}, out at {} ms",
+                    range(static_cast<double>(first_frame_lo), static_cast<double>(first_frame_hi)),
+                    range(first_lo, first_hi));
+  if (posed > 0 && posed < runs.size())
+    first += fmt::format(" ({} of {} replays posed)", posed, runs.size());
+  std::cout << fmt::format(
+      "| {} | {} of {} | {:.1f} ms | {:.1f} ms | {:.1f} ms | {:.1f} ms | {} | {} | {} | "
+      "{:.2f} cm | {:.2f} cm |\n",
+      label, dropped, frames, q(50), q(95), q(99), q(100), ratioTo(paper_median_ms, q(50)),
+      ratioTo(paper_median_ms, q(99)), first, error_mean * 100.0, error_p95 * 100.0);
+}
+
+// The drive at its recorded rate, `replays` times in each mode. When the workers' texts arrive
+// decides which frame set fuses them, so one replay is one draw: with several, the modes take
+// turns (machine state drifts alike for all) and a row per mode gives the replays together
+// (ages pooled, errors averaged, the first pose's range).
 void replay(const BenchArgs& a, const config::Config& config, ocr::TextSpotter& spotter,
             const eval::EvaluationReport& report) {
   double paper_median = 0.0;
@@ -46,41 +111,29 @@ void replay(const BenchArgs& a, const config::Config& config, ocr::TextSpotter& 
                "| heavy work | dropped | age median | p95 | p99 | max | median / paper | "
                "p99 / paper | first pose | error mean | error p95 |\n"
                "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  // Where the heavy work runs: inside the frame set; full frames on the search worker; full
-  // frames and the reads at predicted places on workers (localize/search_worker.h).
-  struct Mode {
-    const char* name;
-    const char* folder;
-    bool search, reads;
-  };
-  for (const Mode& mode : {Mode{"in the frame set", "replay_synchronous", false, false},
-                           Mode{"search worker", "replay_worker", true, false},
-                           Mode{"search and read workers", "replay_workers", true, true}}) {
-    run::RunOptions options;
-    options.pipeline = config.pipeline;
-    options.pipeline.realtime.background_search = mode.search;
-    options.pipeline.realtime.background_reads = mode.reads;
-    options.realtime = true;
-    options.max_frames = static_cast<size_t>(a.max_frames);
-    options.out_dir = (out / mode.folder).string();
-    config::Config worker_config = config;
-    worker_config.pipeline = options.pipeline;
-    const app::WorkerSpotterSet workers = app::makeWorkerSpotters(worker_config);
-    const run::RunSummary s = run::runSequence(sequence, &spotter, options, workers.pointers());
-    const auto ratio = [&](double ms) {
-      return paper_median > 0.0 ? fmt::format("{:.3f}", ms / paper_median) : std::string("-");
-    };
-    std::cout << fmt::format(
-        "| {} | {} of {} | {:.1f} ms | {:.1f} ms | {:.1f} ms | {:.1f} ms | {} | {} | {} | "
-        "{:.2f} cm | {:.2f} cm |\n",
-        mode.name, s.frames_dropped,
-        s.frames + s.frames_dropped, s.pose_age_median_ms, s.pose_age_p95_ms, s.pose_age_p99_ms,
-        s.pose_age_max_ms, ratio(s.pose_age_median_ms), ratio(s.pose_age_p99_ms),
-        s.first_pose_frame ? fmt::format("frame set {}, out at {:.0f} ms", *s.first_pose_frame,
-                                         s.first_pose_output_ms)
-                           : "none",
-        s.mean_position_error_m * 100.0, s.p95_position_error_m * 100.0);
-  }
+  std::vector<std::vector<run::RunSummary>> runs(std::size(kReplayModes));
+  for (int r = 0; r < a.replays; ++r)
+    for (size_t m = 0; m < std::size(kReplayModes); ++m) {
+      const ReplayMode& mode = kReplayModes[m];
+      run::RunOptions options;
+      options.pipeline = config.pipeline;
+      options.pipeline.realtime.background_search = mode.search;
+      options.pipeline.realtime.background_reads = mode.reads;
+      options.realtime = true;
+      options.max_frames = static_cast<size_t>(a.max_frames);
+      options.out_dir =
+          (out / (a.replays > 1 ? fmt::format("{}_{}", mode.folder, r + 1) : mode.folder)).string();
+      config::Config worker_config = config;
+      worker_config.pipeline = options.pipeline;
+      const app::WorkerSpotterSet workers = app::makeWorkerSpotters(worker_config);
+      runs[m].push_back(run::runSequence(sequence, &spotter, options, workers.pointers()));
+      printReplayRow(a.replays > 1 ? fmt::format("{} (replay {})", mode.name, r + 1) : mode.name,
+                     {runs[m].back()}, paper_median);
+    }
+  if (a.replays > 1)
+    for (size_t m = 0; m < std::size(kReplayModes); ++m)
+      printReplayRow(fmt::format("**{}, {} replays**", kReplayModes[m].name, a.replays), runs[m],
+                     paper_median);
   if (paper_median > 0.0)
     std::cout << fmt::format("paper pipeline median {:.1f} ms per frame set\n", paper_median);
 }
@@ -132,7 +185,12 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   cmd->add_option("--out", args->out, "Also write a report folder");
   cmd->add_flag("--no-paper", args->no_paper, "Only the full pipeline");
   cmd->add_flag("--no-replay", args->no_replay,
-                "Skip the real-time replays (the drive at its recorded rate, three times)");
+                "Skip the real-time replays (the drive at its recorded rate, in three modes)");
+  cmd->add_option("--replays", args->replays,
+                  "Replays per mode, taking turns; with more than one, a row per mode gives "
+                  "them together")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   args->config.addTo(cmd);
   cmd->callback([args] { runBench(*args); });

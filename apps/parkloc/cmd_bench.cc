@@ -5,8 +5,6 @@
 // ratios to the paper pipeline's median latency (the machine's speed cancels out).
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <iterator>
@@ -16,9 +14,9 @@
 #include "apps/parkloc/progress_line.h"
 #include "eval/evaluation.h"
 #include "eval/report.h"
-#include "eval/statistics.h"
 #include "eval/tables.h"
 #include "io/sequence.h"
+#include "run/replay_summary.h"
 #include "run/sequence_runner.h"
 
 namespace {
@@ -51,46 +49,27 @@ std::string ratioTo(double paper_median_ms, double ms) {
   return paper_median_ms > 0.0 ? fmt::format("{:.3f}", ms / paper_median_ms) : std::string("-");
 }
 
-// One table row: one replay, or the replays of one mode together (ages pooled, errors averaged
-// over the replays with a pose, the first pose's range).
+// One table row: one replay, or the replays of one mode together (run/replay_summary.h).
 void printReplayRow(const std::string& label, const std::vector<run::RunSummary>& runs,
                     double paper_median_ms) {
-  std::vector<double> ages;
-  size_t dropped = 0, frames = 0;
-  double error_mean = 0.0, error_p95 = 0.0, first_lo = 1e300, first_hi = -1e300;
-  size_t first_frame_lo = SIZE_MAX, first_frame_hi = 0, posed = 0;
-  for (const run::RunSummary& s : runs) {
-    ages.insert(ages.end(), s.pose_age_ms.begin(), s.pose_age_ms.end());
-    dropped += s.frames_dropped;
-    frames += s.frames + s.frames_dropped;
-    if (!s.first_pose_frame) continue;
-    ++posed;
-    error_mean += s.mean_position_error_m;
-    error_p95 += s.p95_position_error_m;
-    first_lo = std::min(first_lo, s.first_pose_output_ms);
-    first_hi = std::max(first_hi, s.first_pose_output_ms);
-    first_frame_lo = std::min(first_frame_lo, *s.first_pose_frame);
-    first_frame_hi = std::max(first_frame_hi, *s.first_pose_frame);
-  }
-  const auto q = [&](double p) { return ages.empty() ? 0.0 : eval::percentile(ages, p); };
-  // Errors over the replays that gave a pose.
-  if (posed > 0) error_mean /= static_cast<double>(posed), error_p95 /= static_cast<double>(posed);
+  const run::ReplaySummary r = run::summarizeReplays(runs);
   const auto range = [](double lo, double hi) {
     return lo == hi ? fmt::format("{:.0f}", lo) : fmt::format("{:.0f}-{:.0f}", lo, hi);
   };
   std::string first = "none";
-  if (posed > 0)
-    first =
-        fmt::format("frame set {}, out at {} ms",
-                    range(static_cast<double>(first_frame_lo), static_cast<double>(first_frame_hi)),
-                    range(first_lo, first_hi));
-  if (posed > 0 && posed < runs.size())
-    first += fmt::format(" ({} of {} replays posed)", posed, runs.size());
+  if (r.posed > 0)
+    first = fmt::format("frame set {}, out at {} ms",
+                        range(static_cast<double>(r.first_pose_frame_min),
+                              static_cast<double>(r.first_pose_frame_max)),
+                        range(r.first_pose_ms_min, r.first_pose_ms_max));
+  if (r.posed > 0 && r.posed < r.replays)
+    first += fmt::format(" ({} of {} replays posed)", r.posed, r.replays);
   std::cout << fmt::format(
       "| {} | {} of {} | {:.1f} ms | {:.1f} ms | {:.1f} ms | {:.1f} ms | {} | {} | {} | "
       "{:.2f} cm | {:.2f} cm |\n",
-      label, dropped, frames, q(50), q(95), q(99), q(100), ratioTo(paper_median_ms, q(50)),
-      ratioTo(paper_median_ms, q(99)), first, error_mean * 100.0, error_p95 * 100.0);
+      label, r.dropped, r.frames, r.age_median_ms, r.age_p95_ms, r.age_p99_ms, r.age_max_ms,
+      ratioTo(paper_median_ms, r.age_median_ms), ratioTo(paper_median_ms, r.age_p99_ms), first,
+      r.mean_error_m * 100.0, r.p95_error_m * 100.0);
 }
 
 // The drive at its recorded rate, `replays` times in each mode. When the workers' texts arrive

@@ -13,22 +13,11 @@
 #include "io/tum.h"
 #include "run/frame_log.h"
 #include "run/oracle_source.h"
+#include "run/percentile.h"
 #include "run/run_visualization.h"
 
 namespace parkloc::run {
 namespace fs = std::filesystem;
-namespace {
-
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const double position = p * static_cast<double>(v.size() - 1);
-  const size_t below = static_cast<size_t>(position);
-  const size_t above = std::min(below + 1, v.size() - 1);
-  return v[below] + (position - static_cast<double>(below)) * (v[above] - v[below]);
-}
-
-}  // namespace
 
 std::optional<geometry::Pose2> truthAt(const std::vector<io::StampedPose>& truth, double t) {
   if (truth.empty() || t < truth.front().timestamp - 1e-6 || t > truth.back().timestamp + 1e-6)

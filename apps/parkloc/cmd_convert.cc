@@ -28,7 +28,10 @@ const bool registered = parkloc::app::registerCommand([](CLI::App& parent) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->callback([args] {
-    const parkloc::io::Sequence sequence(args->sequence);
+    // A survey drive has no map yet: convert needs only the recording (the map and the other
+    // files are copied as they are, when present).
+    const parkloc::io::Sequence sequence(args->sequence, "", "", "",
+                                         parkloc::io::SequenceContents::kSensors);
     parkloc::io::writeSequenceVideos(sequence, args->out, args->video);
     std::cout << "wrote " << sequence.cameras().size() << " videos of "
               << sequence.timestamps().size() << " frame sets to " << args->out << "/videos\n";

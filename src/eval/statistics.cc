@@ -3,25 +3,22 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
+
+#include "run/percentile.h"
 
 namespace parkloc::eval {
 namespace {
 
-// Percentile of an already sorted, non-empty sample.
+// Percentile `p` in [0, 100] of an already sorted, non-empty sample.
 double sortedPercentile(const std::vector<double>& sorted, double p) {
-  const double rank = std::clamp(p, 0.0, 100.0) / 100.0 * static_cast<double>(sorted.size() - 1);
-  const size_t lower = static_cast<size_t>(std::floor(rank));
-  const size_t upper = std::min(lower + 1, sorted.size() - 1);
-  const double fraction = rank - static_cast<double>(lower);
-  return sorted[lower] + fraction * (sorted[upper] - sorted[lower]);
+  return run::sortedPercentile(sorted, p / 100.0);
 }
 
 }  // namespace
 
 double percentile(std::vector<double> values, double p) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  return sortedPercentile(values, p);
+  return run::percentile(std::move(values), p / 100.0);
 }
 
 Summary summarize(const std::vector<double>& values) {

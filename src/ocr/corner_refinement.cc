@@ -74,6 +74,15 @@ std::optional<cv::Mat> innerComponents(const cv::Mat& binary) {
 // crop's edge, which takes a grey-level split for itself and leaves the paint with the floor,
 // stays with the floor here.
 cv::Mat colourDistance(const cv::Mat& crop, double sigma) {
+  // OpenCV builds its 8-bit Lab tables at the first BGR->Lab conversion without a lock: two
+  // threads spotting at once (the critical path and a worker) both build them and one copy is
+  // lost. A function-local static is initialised once, the other threads waiting for it.
+  static const bool lab_tables_built = [] {
+    cv::Mat lab;
+    cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar::all(128)), lab, cv::COLOR_BGR2Lab);
+    return true;
+  }();
+  (void)lab_tables_built;
   cv::Mat lab;
   cv::cvtColor(crop, lab, cv::COLOR_BGR2Lab);
   std::vector<cv::Mat> channels;

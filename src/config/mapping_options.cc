@@ -31,6 +31,9 @@ void describe(OptionVisitor& v, mapping::ConsensusOptions& o) {
           "... and in this many times the runner-up reading's frame sets (else ambiguous)");
   v.value("loop_radius_m", o.loop_radius_m,
           "two places of one reading this close are one text seen again (a loop)");
+  v.value("min_confirmed_frame_sets", o.min_confirmed_frame_sets,
+          "a landmark's reading read by the first recognizer, as a number of the numbering "
+          "when there is one, in at least this many frame sets (0: every reading confirms)");
 }
 
 void describe(OptionVisitor& v, mapping::EstimationOptions& o) {
@@ -58,8 +61,8 @@ void describe(OptionVisitor& v, mapping::MapBuildOptions& o) {
   v.section("estimation", "poses and landmarks by Ceres", [&] { describe(v, o.estimation); });
   v.value("odometry_scale_tolerance", o.odometry_scale_tolerance,
           "beyond this relative distance difference the odometry disagrees with the cameras");
-  v.value("max_rms_px", o.max_rms_px,
-          "a landmark whose corners reproject worse (RMS, px) is no floor text: left out");
+  v.value("max_median_px", o.max_median_px,
+          "a landmark whose corners reproject worse (median, px) is no floor text: left out");
 }
 
 }  // namespace parkloc::config

@@ -78,6 +78,7 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
             {"unplaced_sightings", build.consensus.unplaced},
             {"misread_sightings", build.consensus.misreads},
             {"weak_places", build.consensus.weak_places},
+            {"unconfirmed_places", build.consensus.unconfirmed_places},
             {"loops_closed", build.consensus.loops},
             {"duplicates", build.consensus.duplicates},
             {"inconsistent", build.inconsistent}}},

@@ -92,6 +92,13 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
       ++out.weak_places;
       continue;
     }
+    std::vector<size_t> confirmed;
+    for (size_t i : *winner)
+      if (!sightings[i].second_opinion && !sightings[i].off_numbering) confirmed.push_back(i);
+    if (distinctFrameSets(sightings, confirmed) < options.min_confirmed_frame_sets) {
+      ++out.unconfirmed_places;
+      continue;
+    }
     TextTrack track;
     track.text = sightings[winner->front()].text;
     track.cls = sightings[winner->front()].cls;

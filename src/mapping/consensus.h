@@ -33,6 +33,16 @@ struct ConsensusOptions {
   // readings compete (a 2 read as 7 in a font that blurs them) is left out rather than
   // guessed.
   double min_margin = 2.0;
+  // ... and it was confirmed in at least this many of its frame sets: read by the first
+  // recognizer and, when the drive was read against a numbering, as one of its numbers.
+  // Readings the fallback recognizer alone matched to the numbering (second opinions) and
+  // free readings off the numbering vote in the place's count, where they outvote the first
+  // reader's misreads of a number, but make no landmark by themselves. The numbering a build
+  // learns spans numbers that are not painted, and the fallback matches other floor texts to
+  // them (an upside-down EXIT, raw "11X3", read as 113 in 47 frame sets of a validation drive
+  // and never by the first reader); a free reading that recurs is a car's plate or part of a
+  // number ("04", "LI110" for B1-115 on the train drives). 0: every reading confirms.
+  int min_confirmed_frame_sets = 3;
   // Two places with the same winning reading this close are one text seen twice (a loop).
   double loop_radius_m = 4.0;
 };
@@ -52,6 +62,8 @@ struct Consensus {
   size_t unplaced = 0;     // sightings whose rays missed the floor or beyond max_range_m
   size_t misreads = 0;     // sightings outvoted at their place
   size_t weak_places = 0;  // places whose reading was seen too rarely or disagreed too much
+  // Places whose reading was too rarely confirmed (min_confirmed_frame_sets).
+  size_t unconfirmed_places = 0;
   size_t loops = 0;        // places merged with another of the same reading
   // Readings that won two places far apart: left out of the map.
   std::vector<std::string> duplicates;

@@ -45,6 +45,8 @@ std::vector<Sighting> readDrive(const io::Sequence& drive, size_t drive_index,
         s.cls = instance.cls;
         for (int i = 0; i < 4; ++i) s.pixels[i] = {instance.polygon[i].x, instance.polygon[i].y};
         s.recognition_score = instance.recognition_score;
+        s.second_opinion = instance.second_opinion;
+        s.off_numbering = !lexicon.empty() && !instance.lexicon_match;
         sightings.push_back(std::move(s));
       }
     }

@@ -24,6 +24,11 @@ struct Sighting {
   // Image corners in reading order (top-left, top-right, bottom-right, bottom-left).
   std::array<Eigen::Vector2d, 4> pixels;
   double recognition_score = 0.0;
+  // Only the fallback recognizer matched the reading to the lexicon, after the first reader
+  // matched nothing (ocr::TextInstance::second_opinion).
+  bool second_opinion = false;
+  // Read against a numbering's lexicon, it matched none of its numbers: a free reading.
+  bool off_numbering = false;
 };
 
 struct ReadingOptions {

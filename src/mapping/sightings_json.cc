@@ -21,7 +21,9 @@ void saveSightings(const std::vector<Sighting>& sightings, const std::string& pa
                           {"text", s.text},
                           {"class", map::toString(s.cls)},
                           {"pixels", pixels},
-                          {"score", s.recognition_score}}
+                          {"score", s.recognition_score},
+                          {"second_opinion", s.second_opinion},
+                          {"off_numbering", s.off_numbering}}
                .dump()
         << "\n";
   }
@@ -48,6 +50,8 @@ std::vector<Sighting> loadSightings(const std::string& path) {
         s.pixels[i] = {j.at("pixels").at(i).at(0).get<double>(),
                        j.at("pixels").at(i).at(1).get<double>()};
       s.recognition_score = j.at("score").get<double>();
+      s.second_opinion = j.value("second_opinion", false);
+      s.off_numbering = j.value("off_numbering", false);
       sightings.push_back(std::move(s));
     } catch (const std::exception& e) {
       throw InputError(fmt::format("sightings {} line {}: {}", path, number, e.what()));

@@ -12,13 +12,15 @@ struct Readings {
   std::vector<Sighting> sightings;
   std::vector<std::optional<CastSighting>> cast;
 
-  void add(const std::string& text, const Eigen::Vector2d& place, size_t frame,
-           double range = 3.0) {
+  void add(const std::string& text, const Eigen::Vector2d& place, size_t frame, double range = 3.0,
+           bool second_opinion = false, bool off_numbering = false) {
     Sighting s;
     s.frame = frame;
     s.camera = 0;
     s.text = text;
     s.recognition_score = 0.9;
+    s.second_opinion = second_opinion;
+    s.off_numbering = off_numbering;
     sightings.push_back(s);
     CastSighting c;
     c.centre = place;
@@ -75,6 +77,33 @@ TEST(Consensus, TheSameTextNearByClosesALoopFarAwayIsADuplicate) {
   EXPECT_EQ(find(c, "102"), nullptr);
   ASSERT_EQ(c.duplicates.size(), 1u);
   EXPECT_EQ(c.duplicates[0], "102");
+}
+
+TEST(Consensus, UnconfirmedReadingsVoteButMakeNoLandmarkAlone) {
+  Readings r;
+  // A car's plate, read freely off the numbering the drive was read against.
+  for (size_t f = 0; f < 5; ++f) r.add("04", {20.0, 1.0}, f, 3.0, false, /*off_numbering=*/true);
+  // Another floor text (an EXIT) that only the fallback recognizer matched to a number.
+  for (size_t f = 0; f < 6; ++f) r.add("113", {4.0, 1.0}, f, 3.0, /*second_opinion=*/true);
+  // A number the first reader reads 4 times and misreads 5 times, the fallback reads 6 times.
+  for (size_t f = 0; f < 4; ++f) r.add("132", {9.0, 1.0}, f);
+  for (size_t f = 4; f < 9; ++f) r.add("152", {9.0, 1.0}, f);
+  for (size_t f = 9; f < 15; ++f) r.add("132", {9.0, 1.0}, f, 3.0, /*second_opinion=*/true);
+  Consensus c = formConsensus(r.sightings, r.cast, {});
+  EXPECT_EQ(find(c, "113"), nullptr);
+  EXPECT_EQ(find(c, "04"), nullptr);
+  EXPECT_EQ(c.unconfirmed_places, 2u);
+  EXPECT_EQ(find(c, "152"), nullptr);
+  const TextTrack* number = find(c, "132");
+  ASSERT_NE(number, nullptr);
+  EXPECT_EQ(number->frame_sets, 10);
+
+  ConsensusOptions options;
+  options.min_confirmed_frame_sets = 0;
+  c = formConsensus(r.sightings, r.cast, options);
+  EXPECT_NE(find(c, "113"), nullptr);
+  EXPECT_NE(find(c, "04"), nullptr);
+  EXPECT_EQ(c.unconfirmed_places, 0u);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // MAP.svg (the landmarks and the drives).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -173,6 +174,16 @@ void run(const MapBuildArgs& a) {
   }
   if (!build.inconsistent.empty())
     fmt::print("  left out, corners fit no floor text: {}\n", fmt::join(build.inconsistent, ", "));
+  if (!build.consensus.undecided.empty()) {
+    std::vector<std::string> places;
+    for (const mapping::UndecidedPlace& u : build.consensus.undecided) {
+      std::vector<std::string> readings;
+      for (size_t k = 0; k < std::min<size_t>(u.readings.size(), 3); ++k)
+        readings.push_back(fmt::format("{} {}", u.readings[k].first, u.readings[k].second));
+      places.push_back(fmt::format("{} ({})", fmt::join(readings, " / "), u.why));
+    }
+    fmt::print("  left out, reading undecided (frame sets): {}\n", fmt::join(places, "; "));
+  }
   for (const std::string& p : build.problems) fmt::print("  problem: {}\n", p);
   fmt::print("wrote {}, {}, {}\n", a.out, replaceExtension(a.out, ".svg"),
              replaceExtension(a.out, ".report.json"));

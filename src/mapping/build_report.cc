@@ -70,6 +70,14 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
     numbering.push_back(
         {{"format", f.pattern}, {"numbers", f.support}, {"from", from}, {"to", to}});
   }
+  nlohmann::json undecided = nlohmann::json::array();
+  for (const UndecidedPlace& u : build.consensus.undecided) {
+    nlohmann::json readings = nlohmann::json::array();
+    for (const auto& [text, frame_sets] : u.readings)
+      readings.push_back({{"text", text}, {"frame_sets", frame_sets}});
+    undecided.push_back(
+        {{"x", u.place.x()}, {"y", u.place.y()}, {"why", u.why}, {"readings", readings}});
+  }
   return {{"level", level},
           {"drives", drives},
           {"numbering", numbering},
@@ -79,6 +87,7 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
             {"misread_sightings", build.consensus.misreads},
             {"weak_places", build.consensus.weak_places},
             {"unconfirmed_places", build.consensus.unconfirmed_places},
+            {"undecided_places", undecided},
             {"loops_closed", build.consensus.loops},
             {"duplicates", build.consensus.duplicates},
             {"inconsistent", build.inconsistent}}},

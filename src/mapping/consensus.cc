@@ -86,10 +86,23 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
     const int all_frames = distinctFrameSets(sightings, competing);
     const int misreads = static_cast<int>(place.members.size() - winner->size());
     out.misreads += static_cast<size_t>(misreads);
+    // A place legible enough to be a landmark that the rules leave out, with what it read.
+    const auto undecided = [&](const char* why) {
+      if (best.first < options.min_frame_sets) return;
+      UndecidedPlace u;
+      u.place = place.centre();
+      u.why = why;
+      for (const auto& [text, members] : by_text)
+        u.readings.emplace_back(text, distinctFrameSets(sightings, members));
+      std::sort(u.readings.begin(), u.readings.end(),
+                [](const auto& a, const auto& b) { return a.second > b.second; });
+      out.undecided.push_back(std::move(u));
+    };
     if (best.first < options.min_frame_sets ||
         best.first < options.min_agreement * static_cast<double>(all_frames) ||
         best.first < options.min_margin * runner_up) {
       ++out.weak_places;
+      undecided(best.first < options.min_margin * runner_up ? "close runner-up" : "disagreement");
       continue;
     }
     std::vector<size_t> confirmed;
@@ -97,6 +110,7 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
       if (!sightings[i].second_opinion && !sightings[i].off_numbering) confirmed.push_back(i);
     if (distinctFrameSets(sightings, confirmed) < options.min_confirmed_frame_sets) {
       ++out.unconfirmed_places;
+      undecided("unconfirmed");
       continue;
     }
     TextTrack track;

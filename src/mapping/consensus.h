@@ -9,6 +9,7 @@
 // apart they are a number painted twice or a misread that won a place, and neither is kept.
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "map/landmark.h"
@@ -57,6 +58,13 @@ struct TextTrack {
   Eigen::Vector2d place = Eigen::Vector2d::Zero();
 };
 
+// A place whose best reading was seen in enough frame sets but made no landmark, and why.
+struct UndecidedPlace {
+  Eigen::Vector2d place = Eigen::Vector2d::Zero();  // in the dead-reckoned frame
+  std::string why;  // "disagreement", "close runner-up" or "unconfirmed"
+  std::vector<std::pair<std::string, int>> readings;  // (text, frame sets), most first
+};
+
 struct Consensus {
   std::vector<TextTrack> tracks;
   size_t unplaced = 0;     // sightings whose rays missed the floor or beyond max_range_m
@@ -67,6 +75,7 @@ struct Consensus {
   size_t loops = 0;        // places merged with another of the same reading
   // Readings that won two places far apart: left out of the map.
   std::vector<std::string> duplicates;
+  std::vector<UndecidedPlace> undecided;
 };
 
 // `cast[i]` is sightings[i] cast through its drive's poses (empty: unplaced); all drives in one

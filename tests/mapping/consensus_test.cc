@@ -59,6 +59,13 @@ TEST(Consensus, TooFewFrameSetsOrTooLittleAgreementMakeNoLandmark) {
   EXPECT_TRUE(c.tracks.empty());
   EXPECT_EQ(c.weak_places, 2u);
   EXPECT_EQ(c.unplaced, 1u);
+  // The report names the place legible enough to be a landmark, with what it read.
+  ASSERT_EQ(c.undecided.size(), 1u);
+  EXPECT_EQ(c.undecided[0].why, "close runner-up");
+  EXPECT_NEAR(c.undecided[0].place.x(), 10.0, 1e-9);
+  ASSERT_EQ(c.undecided[0].readings.size(), 2u);
+  EXPECT_EQ(c.undecided[0].readings[0], std::make_pair(std::string("C7"), 4));
+  EXPECT_EQ(c.undecided[0].readings[1], std::make_pair(std::string("C1"), 3));
 }
 
 TEST(Consensus, TheSameTextNearByClosesALoopFarAwayIsADuplicate) {
@@ -93,6 +100,8 @@ TEST(Consensus, UnconfirmedReadingsVoteButMakeNoLandmarkAlone) {
   EXPECT_EQ(find(c, "113"), nullptr);
   EXPECT_EQ(find(c, "04"), nullptr);
   EXPECT_EQ(c.unconfirmed_places, 2u);
+  ASSERT_EQ(c.undecided.size(), 2u);
+  EXPECT_EQ(c.undecided[0].why, "unconfirmed");
   EXPECT_EQ(find(c, "152"), nullptr);
   const TextTrack* number = find(c, "132");
   ASSERT_NE(number, nullptr);

@@ -87,6 +87,7 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
             {"misread_sightings", build.consensus.misreads},
             {"weak_places", build.consensus.weak_places},
             {"unconfirmed_places", build.consensus.unconfirmed_places},
+            {"sequence_decided_places", build.consensus.sequence_decided},
             {"undecided_places", undecided},
             {"loops_closed", build.consensus.loops},
             {"duplicates", build.consensus.duplicates},

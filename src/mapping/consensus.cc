@@ -1,6 +1,7 @@
 #include "mapping/consensus.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 #include <utility>
@@ -44,6 +45,47 @@ std::vector<Place> groupByPlace(const std::vector<std::optional<CastSighting>>& 
   return places;
 }
 
+// Two numbers of one format one bay apart: the same length, the same letters and signs in the
+// same places, the digits, read as one number, differing by one ("B2-047", "B2-048").
+bool oneApart(const std::string& a, const std::string& b) {
+  if (a.size() != b.size() || a.size() > 18) return false;
+  long long da = 0, db = 0;
+  bool digits = false;
+  for (size_t k = 0; k < a.size(); ++k) {
+    const bool ca = std::isdigit(static_cast<unsigned char>(a[k])) != 0;
+    const bool cb = std::isdigit(static_cast<unsigned char>(b[k])) != 0;
+    if (ca != cb || (!ca && a[k] != b[k])) return false;
+    if (ca) {
+      da = 10 * da + (a[k] - '0');
+      db = 10 * db + (b[k] - '0');
+      digits = true;
+    }
+  }
+  return digits && (da - db == 1 || db - da == 1);
+}
+
+// A place the counts left undecided, kept for the numbering's sequence to decide.
+struct Pending {
+  std::map<std::string, std::vector<size_t>> by_text;
+  Eigen::Vector2d centre;
+  size_t members = 0;
+  size_t undecided = 0;  // its index in Consensus::undecided
+};
+
+TextTrack makeTrack(const std::vector<Sighting>& sightings,
+                    const std::vector<std::optional<CastSighting>>& cast,
+                    const std::vector<size_t>& members, int frame_sets, int misreads) {
+  TextTrack track;
+  track.text = sightings[members.front()].text;
+  track.cls = sightings[members.front()].cls;
+  track.sightings = members;
+  track.frame_sets = frame_sets;
+  track.misreads = misreads;
+  for (size_t i : members) track.place += cast[i]->centre;
+  track.place /= static_cast<double>(members.size());
+  return track;
+}
+
 }  // namespace
 
 Consensus formConsensus(const std::vector<Sighting>& sightings,
@@ -57,7 +99,14 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
     else
       ++out.unplaced;
   }
+  const auto confirmedFrameSets = [&](const std::vector<size_t>& members) {
+    std::vector<size_t> confirmed;
+    for (size_t i : members)
+      if (!sightings[i].second_opinion && !sightings[i].off_numbering) confirmed.push_back(i);
+    return distinctFrameSets(sightings, confirmed);
+  };
   std::vector<TextTrack> candidates;
+  std::vector<Pending> pending;
   for (const Place& place : groupByPlace(cast, placed, options.place_radius_m)) {
     std::map<std::string, std::vector<size_t>> by_text;
     for (size_t i : place.members) by_text[sightings[i].text].push_back(i);
@@ -103,26 +152,53 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
         best.first < options.min_margin * runner_up) {
       ++out.weak_places;
       undecided(best.first < options.min_margin * runner_up ? "close runner-up" : "disagreement");
+      if (best.first >= options.min_frame_sets)
+        pending.push_back(
+            {by_text, place.centre(), place.members.size(), out.undecided.size() - 1});
       continue;
     }
-    std::vector<size_t> confirmed;
-    for (size_t i : *winner)
-      if (!sightings[i].second_opinion && !sightings[i].off_numbering) confirmed.push_back(i);
-    if (distinctFrameSets(sightings, confirmed) < options.min_confirmed_frame_sets) {
+    if (confirmedFrameSets(*winner) < options.min_confirmed_frame_sets) {
       ++out.unconfirmed_places;
       undecided("unconfirmed");
       continue;
     }
-    TextTrack track;
-    track.text = sightings[winner->front()].text;
-    track.cls = sightings[winner->front()].cls;
-    track.sightings = *winner;
-    track.frame_sets = best.first;
-    track.misreads = misreads;
-    for (size_t i : *winner) track.place += cast[i]->centre;
-    track.place /= static_cast<double>(winner->size());
-    candidates.push_back(std::move(track));
+    candidates.push_back(makeTrack(sightings, cast, *winner, best.first, misreads));
   }
+
+  // An undecided place goes to the one reading that continues the numbering of a landmark
+  // beside it (ConsensusOptions::sequence_radius_m).
+  std::vector<bool> resolved(out.undecided.size(), false);
+  const size_t decided = candidates.size();
+  for (const Pending& p : pending) {
+    if (options.sequence_radius_m <= 0.0) break;
+    const std::vector<size_t>* chosen = nullptr;
+    int choices = 0;
+    for (const auto& [text, members] : p.by_text) {
+      if (distinctFrameSets(sightings, members) < options.min_frame_sets ||
+          confirmedFrameSets(members) < options.min_confirmed_frame_sets)
+        continue;
+      const bool continues =
+          std::any_of(candidates.begin(), candidates.begin() + static_cast<long>(decided),
+                      [&](const TextTrack& t) {
+                        return (t.place - p.centre).norm() <= options.sequence_radius_m &&
+                               oneApart(t.text, text);
+                      });
+      if (continues) {
+        chosen = &members;
+        ++choices;
+      }
+    }
+    if (choices != 1) continue;
+    candidates.push_back(makeTrack(sightings, cast, *chosen, distinctFrameSets(sightings, *chosen),
+                                   static_cast<int>(p.members - chosen->size())));
+    resolved[p.undecided] = true;
+    --out.weak_places;
+    ++out.sequence_decided;
+  }
+  std::vector<UndecidedPlace> still;
+  for (size_t k = 0; k < out.undecided.size(); ++k)
+    if (!resolved[k]) still.push_back(std::move(out.undecided[k]));
+  out.undecided = std::move(still);
 
   // One reading at several places: a loop when they are near, else a duplicate.
   std::map<std::string, std::vector<size_t>> by_text;

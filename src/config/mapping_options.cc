@@ -66,6 +66,8 @@ void describe(OptionVisitor& v, mapping::MapBuildOptions& o) {
           "beyond this relative distance difference the odometry disagrees with the cameras");
   v.value("max_median_px", o.max_median_px,
           "a landmark whose corners reproject worse (median, px) is no floor text: left out");
+  v.value("max_rms_px", o.max_rms_px,
+          "... or worse in the RMS (px): a box over a pillar's text and the floor");
 }
 
 }  // namespace parkloc::config

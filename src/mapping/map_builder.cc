@@ -133,7 +133,8 @@ MapBuild estimateMap(const std::vector<const geometry::Rig*>& rigs,
     problem.measureResiduals();
     std::vector<size_t> keep;
     for (size_t t = 0; t < build.landmarks.size(); ++t) {
-      if (build.landmarks[t].median_px <= options.max_median_px)
+      if (build.landmarks[t].median_px <= options.max_median_px &&
+          build.landmarks[t].rms_px <= options.max_rms_px)
         keep.push_back(t);
       else
         build.inconsistent.push_back(build.landmarks[t].text);

@@ -174,6 +174,9 @@ void run(const MapBuildArgs& a) {
   }
   if (!build.inconsistent.empty())
     fmt::print("  left out, corners fit no floor text: {}\n", fmt::join(build.inconsistent, ", "));
+  if (!build.consensus.out_of_sequence.empty())
+    fmt::print("  left out, out of the numbering's sequence beside a better-seen number: {}\n",
+               fmt::join(build.consensus.out_of_sequence, ", "));
   if (!build.consensus.undecided.empty()) {
     std::vector<std::string> places;
     for (const mapping::UndecidedPlace& u : build.consensus.undecided) {

@@ -89,6 +89,7 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
             {"unconfirmed_places", build.consensus.unconfirmed_places},
             {"sequence_decided_places", build.consensus.sequence_decided},
             {"undecided_places", undecided},
+            {"out_of_sequence", build.consensus.out_of_sequence},
             {"loops_closed", build.consensus.loops},
             {"duplicates", build.consensus.duplicates},
             {"inconsistent", build.inconsistent}}},

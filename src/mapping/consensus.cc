@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -45,24 +46,28 @@ std::vector<Place> groupByPlace(const std::vector<std::optional<CastSighting>>& 
   return places;
 }
 
-// Two numbers of one format one bay apart: the same length, the same letters and signs in the
-// same places, the digits, read as one number, differing by one ("B2-047", "B2-048").
-bool oneApart(const std::string& a, const std::string& b) {
-  if (a.size() != b.size() || a.size() > 18) return false;
+// How many numbers apart two texts of one format are: the same length, the same letters and
+// signs in the same places, the digits read as one number ("B2-047", "B2-048": 1); nullopt
+// when they are of different formats.
+std::optional<long long> numbersApart(const std::string& a, const std::string& b) {
+  if (a.size() != b.size() || a.size() > 18) return std::nullopt;
   long long da = 0, db = 0;
   bool digits = false;
   for (size_t k = 0; k < a.size(); ++k) {
     const bool ca = std::isdigit(static_cast<unsigned char>(a[k])) != 0;
     const bool cb = std::isdigit(static_cast<unsigned char>(b[k])) != 0;
-    if (ca != cb || (!ca && a[k] != b[k])) return false;
+    if (ca != cb || (!ca && a[k] != b[k])) return std::nullopt;
     if (ca) {
       da = 10 * da + (a[k] - '0');
       db = 10 * db + (b[k] - '0');
       digits = true;
     }
   }
-  return digits && (da - db == 1 || db - da == 1);
+  if (!digits) return std::nullopt;
+  return da > db ? da - db : db - da;
 }
+
+bool oneApart(const std::string& a, const std::string& b) { return numbersApart(a, b) == 1; }
 
 // A place the counts left undecided, kept for the numbering's sequence to decide.
 struct Pending {
@@ -226,6 +231,26 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
     }
     merged.frame_sets = distinctFrameSets(sightings, merged.sightings);
     out.tracks.push_back(std::move(merged));
+  }
+
+  // Two landmarks of one format side by side whose numbers are not consecutive: one of them
+  // is a misread that won its place; the one seen in fewer frame sets is left out.
+  if (options.sequence_radius_m > 0.0) {
+    std::vector<TextTrack> kept;
+    for (const TextTrack& t : out.tracks) {
+      const bool outvoted =
+          std::any_of(out.tracks.begin(), out.tracks.end(), [&](const TextTrack& u) {
+            const auto apart = numbersApart(t.text, u.text);
+            return &u != &t && apart && *apart != 1 &&
+                   (u.place - t.place).norm() <= options.sequence_radius_m &&
+                   u.frame_sets > t.frame_sets;
+          });
+      if (outvoted)
+        out.out_of_sequence.push_back(t.text);
+      else
+        kept.push_back(t);
+    }
+    out.tracks = std::move(kept);
   }
   return out;
 }

@@ -142,5 +142,26 @@ TEST(Consensus, AnUndecidedPlaceGoesToTheReadingThatContinuesTheNumberingBesideI
   EXPECT_EQ(c.undecided.size(), 2u);
 }
 
+TEST(Consensus, OfTwoNumbersSideBySideOutOfSequenceTheLessSeenIsLeftOut) {
+  Readings r;
+  for (size_t f = 0; f < 9; ++f) r.add("019", {0.0, 0.0}, f);
+  for (size_t f = 0; f < 4; ++f) r.add("070", {2.5, 0.0}, f);   // 020 misread
+  for (size_t f = 0; f < 4; ++f) r.add("C021", {5.0, 0.0}, f);  // another format: no sequence
+  for (size_t f = 0; f < 5; ++f) r.add("040", {9.0, 0.0}, f);   // beyond the radius
+  Consensus c = formConsensus(r.sightings, r.cast, {});
+  EXPECT_NE(find(c, "019"), nullptr);
+  EXPECT_EQ(find(c, "070"), nullptr);
+  EXPECT_NE(find(c, "C021"), nullptr);
+  EXPECT_NE(find(c, "040"), nullptr);
+  ASSERT_EQ(c.out_of_sequence.size(), 1u);
+  EXPECT_EQ(c.out_of_sequence[0], "070");
+
+  ConsensusOptions options;
+  options.sequence_radius_m = 0.0;
+  c = formConsensus(r.sightings, r.cast, options);
+  EXPECT_NE(find(c, "070"), nullptr);
+  EXPECT_TRUE(c.out_of_sequence.empty());
+}
+
 }  // namespace
 }  // namespace parkloc::mapping

@@ -35,8 +35,8 @@ void describe(OptionVisitor& v, mapping::ConsensusOptions& o) {
           "a landmark's reading read by the first recognizer, as a number of the numbering "
           "when there is one, in at least this many frame sets (0: every reading confirms)");
   v.value("sequence_radius_m", o.sequence_radius_m,
-          "an undecided place goes to the reading one number away from a landmark this close "
-          "(0: off)");
+          "of two landmarks this close whose numbers are not consecutive, the less seen is left "
+          "out (0: off)");
 }
 
 void describe(OptionVisitor& v, mapping::EstimationOptions& o) {

@@ -153,4 +153,22 @@ std::pair<std::string, std::string> numberingEnds(const NumberingFormat& f) {
           numberOf(f, letterCombinations(f.pattern) - 1, lastValue(f))};
 }
 
+std::optional<long long> numbersApart(const std::string& a, const std::string& b) {
+  if (a.size() != b.size() || a.size() > 18) return std::nullopt;
+  long long da = 0, db = 0;
+  bool digits = false;
+  for (size_t k = 0; k < a.size(); ++k) {
+    const bool ca = std::isdigit(static_cast<unsigned char>(a[k])) != 0;
+    const bool cb = std::isdigit(static_cast<unsigned char>(b[k])) != 0;
+    if (ca != cb || (!ca && a[k] != b[k])) return std::nullopt;
+    if (ca) {
+      da = 10 * da + (a[k] - '0');
+      db = 10 * db + (b[k] - '0');
+      digits = true;
+    }
+  }
+  if (!digits) return std::nullopt;
+  return da > db ? da - db : db - da;
+}
+
 }  // namespace parkloc::map

@@ -8,6 +8,7 @@
 // numbers a first reading agreed on (docs/MAPPING.md); the localizer lets the numbers of its
 // map's formats that the map lacks compete with the map's own, so that a number outside a
 // partial map is read as itself, not as the nearest number of the map (docs/LOCALIZATION.md).
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,5 +59,10 @@ std::pair<std::string, std::string> numberingEnds(const NumberingFormat& format)
 
 // Every string of the formats, without repeats.
 std::vector<std::string> numberingLexicon(const std::vector<NumberingFormat>& formats);
+
+// How many numbers apart two texts of one format are: the same length, the same letters and
+// signs in the same places, the digits read as one number ("B2-047" and "B2-048": 1; "019"
+// and "070": 51); nullopt when their formats differ or they have no digit.
+std::optional<long long> numbersApart(const std::string& a, const std::string& b);
 
 }  // namespace parkloc::map

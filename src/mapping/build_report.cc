@@ -87,7 +87,6 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
             {"misread_sightings", build.consensus.misreads},
             {"weak_places", build.consensus.weak_places},
             {"unconfirmed_places", build.consensus.unconfirmed_places},
-            {"sequence_decided_places", build.consensus.sequence_decided},
             {"undecided_places", undecided},
             {"out_of_sequence", build.consensus.out_of_sequence},
             {"loops_closed", build.consensus.loops},

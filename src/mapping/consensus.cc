@@ -1,11 +1,12 @@
 #include "mapping/consensus.h"
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 #include <optional>
 #include <set>
 #include <utility>
+
+#include "map/numbering.h"
 
 namespace parkloc::mapping {
 namespace {
@@ -46,37 +47,6 @@ std::vector<Place> groupByPlace(const std::vector<std::optional<CastSighting>>& 
   return places;
 }
 
-// How many numbers apart two texts of one format are: the same length, the same letters and
-// signs in the same places, the digits read as one number ("B2-047", "B2-048": 1); nullopt
-// when they are of different formats.
-std::optional<long long> numbersApart(const std::string& a, const std::string& b) {
-  if (a.size() != b.size() || a.size() > 18) return std::nullopt;
-  long long da = 0, db = 0;
-  bool digits = false;
-  for (size_t k = 0; k < a.size(); ++k) {
-    const bool ca = std::isdigit(static_cast<unsigned char>(a[k])) != 0;
-    const bool cb = std::isdigit(static_cast<unsigned char>(b[k])) != 0;
-    if (ca != cb || (!ca && a[k] != b[k])) return std::nullopt;
-    if (ca) {
-      da = 10 * da + (a[k] - '0');
-      db = 10 * db + (b[k] - '0');
-      digits = true;
-    }
-  }
-  if (!digits) return std::nullopt;
-  return da > db ? da - db : db - da;
-}
-
-bool oneApart(const std::string& a, const std::string& b) { return numbersApart(a, b) == 1; }
-
-// A place the counts left undecided, kept for the numbering's sequence to decide.
-struct Pending {
-  std::map<std::string, std::vector<size_t>> by_text;
-  Eigen::Vector2d centre;
-  size_t members = 0;
-  size_t undecided = 0;  // its index in Consensus::undecided
-};
-
 TextTrack makeTrack(const std::vector<Sighting>& sightings,
                     const std::vector<std::optional<CastSighting>>& cast,
                     const std::vector<size_t>& members, int frame_sets, int misreads) {
@@ -111,7 +81,6 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
     return distinctFrameSets(sightings, confirmed);
   };
   std::vector<TextTrack> candidates;
-  std::vector<Pending> pending;
   for (const Place& place : groupByPlace(cast, placed, options.place_radius_m)) {
     std::map<std::string, std::vector<size_t>> by_text;
     for (size_t i : place.members) by_text[sightings[i].text].push_back(i);
@@ -157,9 +126,6 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
         best.first < options.min_margin * runner_up) {
       ++out.weak_places;
       undecided(best.first < options.min_margin * runner_up ? "close runner-up" : "disagreement");
-      if (best.first >= options.min_frame_sets)
-        pending.push_back(
-            {by_text, place.centre(), place.members.size(), out.undecided.size() - 1});
       continue;
     }
     if (confirmedFrameSets(*winner) < options.min_confirmed_frame_sets) {
@@ -169,41 +135,6 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
     }
     candidates.push_back(makeTrack(sightings, cast, *winner, best.first, misreads));
   }
-
-  // An undecided place goes to the one reading that continues the numbering of a landmark
-  // beside it (ConsensusOptions::sequence_radius_m).
-  std::vector<bool> resolved(out.undecided.size(), false);
-  const size_t decided = candidates.size();
-  for (const Pending& p : pending) {
-    if (options.sequence_radius_m <= 0.0) break;
-    const std::vector<size_t>* chosen = nullptr;
-    int choices = 0;
-    for (const auto& [text, members] : p.by_text) {
-      if (distinctFrameSets(sightings, members) < options.min_frame_sets ||
-          confirmedFrameSets(members) < options.min_confirmed_frame_sets)
-        continue;
-      const bool continues =
-          std::any_of(candidates.begin(), candidates.begin() + static_cast<long>(decided),
-                      [&](const TextTrack& t) {
-                        return (t.place - p.centre).norm() <= options.sequence_radius_m &&
-                               oneApart(t.text, text);
-                      });
-      if (continues) {
-        chosen = &members;
-        ++choices;
-      }
-    }
-    if (choices != 1) continue;
-    candidates.push_back(makeTrack(sightings, cast, *chosen, distinctFrameSets(sightings, *chosen),
-                                   static_cast<int>(p.members - chosen->size())));
-    resolved[p.undecided] = true;
-    --out.weak_places;
-    ++out.sequence_decided;
-  }
-  std::vector<UndecidedPlace> still;
-  for (size_t k = 0; k < out.undecided.size(); ++k)
-    if (!resolved[k]) still.push_back(std::move(out.undecided[k]));
-  out.undecided = std::move(still);
 
   // One reading at several places: a loop when they are near, else a duplicate.
   std::map<std::string, std::vector<size_t>> by_text;
@@ -240,7 +171,7 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
     for (const TextTrack& t : out.tracks) {
       const bool outvoted =
           std::any_of(out.tracks.begin(), out.tracks.end(), [&](const TextTrack& u) {
-            const auto apart = numbersApart(t.text, u.text);
+            const auto apart = map::numbersApart(t.text, u.text);
             return &u != &t && apart && *apart != 1 &&
                    (u.place - t.place).norm() <= options.sequence_radius_m &&
                    u.frame_sets > t.frame_sets;

@@ -46,14 +46,11 @@ struct ConsensusOptions {
   int min_confirmed_frame_sets = 3;
   // Two places with the same winning reading this close are one text seen twice (a loop).
   double loop_radius_m = 4.0;
-  // Bays are numbered in sequence along a row (a bay is 2.3-3 m wide). A place the counts
-  // leave undecided (a close runner-up, too little agreement) goes to the one reading, itself
-  // seen and confirmed in enough frame sets, that is one number away from a landmark within
-  // this distance: beside 131 the 132 is painted, not the 152 that the first reader saw in 17
-  // of 42 frame sets on a validation drive. Two landmarks of one format within it whose
-  // numbers are not consecutive hold a misread: the one seen in fewer frame sets is left out
-  // (070 in 18 frame sets beside 019 in 66, for 020; 101 in 3 beside 103 in 22, for 102, on the
-  // train drives, where no two true landmarks within 4 m broke the sequence). 0: off.
+  // Bays are numbered in sequence along a row (a bay is 2.3-3 m wide): two landmarks of one
+  // format within this distance whose numbers are not consecutive hold a misread that won its
+  // place, and the one seen in fewer frame sets is left out (070 in 18 frame sets beside 019
+  // in 66, for 020; 101 in 3 beside 103 in 22, for 102, on the train drives, where no two true
+  // landmarks within 4 m broke the sequence). 0: off.
   double sequence_radius_m = 4.0;
 };
 
@@ -81,8 +78,6 @@ struct Consensus {
   size_t weak_places = 0;  // places whose reading was seen too rarely or disagreed too much
   // Places whose reading was too rarely confirmed (min_confirmed_frame_sets).
   size_t unconfirmed_places = 0;
-  // Undecided places that the numbering's sequence decided (sequence_radius_m).
-  size_t sequence_decided = 0;
   size_t loops = 0;        // places merged with another of the same reading
   // Readings that won two places far apart: left out of the map.
   std::vector<std::string> duplicates;

@@ -113,5 +113,16 @@ TEST(NumberingFormat, ValidFormatsHaveAnOpenDigitAndABoundedSpan) {
   EXPECT_FALSE(validNumbering("", 2000));
 }
 
+TEST(NumberingFormat, NumbersApartCountsBaysWithinOneFormat) {
+  EXPECT_EQ(numbersApart("B2-047", "B2-048"), 1);
+  EXPECT_EQ(numbersApart("019", "070"), 51);
+  EXPECT_EQ(numbersApart("C099", "C100"), 1);
+  EXPECT_EQ(numbersApart("131", "131"), 0);
+  EXPECT_FALSE(numbersApart("C021", "021").has_value());   // lengths differ
+  EXPECT_FALSE(numbersApart("C021", "D022").has_value());  // zones differ
+  EXPECT_FALSE(numbersApart("1A1", "111").has_value());    // a letter where a digit is
+  EXPECT_FALSE(numbersApart("EXIT", "EXIT").has_value());  // no digit
+}
+
 }  // namespace
 }  // namespace parkloc::map

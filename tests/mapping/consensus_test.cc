@@ -115,33 +115,6 @@ TEST(Consensus, UnconfirmedReadingsVoteButMakeNoLandmarkAlone) {
   EXPECT_EQ(c.unconfirmed_places, 0u);
 }
 
-TEST(Consensus, AnUndecidedPlaceGoesToTheReadingThatContinuesTheNumberingBesideIt) {
-  Readings r;
-  for (size_t f = 0; f < 5; ++f) r.add("B1-131", {0.0, 0.0}, f);
-  // The next bay: the number read 5 times, a misread 4 times (no margin of 2).
-  for (size_t f = 0; f < 5; ++f) r.add("B1-132", {2.5, 0.0}, f);
-  for (size_t f = 5; f < 9; ++f) r.add("B1-152", {2.5, 0.0}, f);
-  // The same contest far from any landmark.
-  for (size_t f = 0; f < 5; ++f) r.add("B1-262", {20.0, 0.0}, f);
-  for (size_t f = 5; f < 9; ++f) r.add("B1-292", {20.0, 0.0}, f);
-  Consensus c = formConsensus(r.sightings, r.cast, {});
-  const TextTrack* next = find(c, "B1-132");
-  ASSERT_NE(next, nullptr);
-  EXPECT_EQ(next->frame_sets, 5);
-  EXPECT_EQ(next->misreads, 4);
-  EXPECT_EQ(find(c, "B1-152"), nullptr);
-  EXPECT_EQ(find(c, "B1-262"), nullptr);
-  EXPECT_EQ(c.sequence_decided, 1u);
-  ASSERT_EQ(c.undecided.size(), 1u);
-  EXPECT_EQ(c.undecided[0].readings[0].first, "B1-262");
-
-  ConsensusOptions options;
-  options.sequence_radius_m = 0.0;
-  c = formConsensus(r.sightings, r.cast, options);
-  EXPECT_EQ(find(c, "B1-132"), nullptr);
-  EXPECT_EQ(c.undecided.size(), 2u);
-}
-
 TEST(Consensus, OfTwoNumbersSideBySideOutOfSequenceTheLessSeenIsLeftOut) {
   Readings r;
   for (size_t f = 0; f < 9; ++f) r.add("019", {0.0, 0.0}, f);

@@ -47,20 +47,6 @@ std::vector<Place> groupByPlace(const std::vector<std::optional<CastSighting>>& 
   return places;
 }
 
-TextTrack makeTrack(const std::vector<Sighting>& sightings,
-                    const std::vector<std::optional<CastSighting>>& cast,
-                    const std::vector<size_t>& members, int frame_sets, int misreads) {
-  TextTrack track;
-  track.text = sightings[members.front()].text;
-  track.cls = sightings[members.front()].cls;
-  track.sightings = members;
-  track.frame_sets = frame_sets;
-  track.misreads = misreads;
-  for (size_t i : members) track.place += cast[i]->centre;
-  track.place /= static_cast<double>(members.size());
-  return track;
-}
-
 }  // namespace
 
 Consensus formConsensus(const std::vector<Sighting>& sightings,
@@ -74,12 +60,6 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
     else
       ++out.unplaced;
   }
-  const auto confirmedFrameSets = [&](const std::vector<size_t>& members) {
-    std::vector<size_t> confirmed;
-    for (size_t i : members)
-      if (!sightings[i].second_opinion && !sightings[i].off_numbering) confirmed.push_back(i);
-    return distinctFrameSets(sightings, confirmed);
-  };
   std::vector<TextTrack> candidates;
   for (const Place& place : groupByPlace(cast, placed, options.place_radius_m)) {
     std::map<std::string, std::vector<size_t>> by_text;
@@ -128,12 +108,23 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
       undecided(best.first < options.min_margin * runner_up ? "close runner-up" : "disagreement");
       continue;
     }
-    if (confirmedFrameSets(*winner) < options.min_confirmed_frame_sets) {
+    std::vector<size_t> confirmed;
+    for (size_t i : *winner)
+      if (!sightings[i].second_opinion && !sightings[i].off_numbering) confirmed.push_back(i);
+    if (distinctFrameSets(sightings, confirmed) < options.min_confirmed_frame_sets) {
       ++out.unconfirmed_places;
       undecided("unconfirmed");
       continue;
     }
-    candidates.push_back(makeTrack(sightings, cast, *winner, best.first, misreads));
+    TextTrack track;
+    track.text = sightings[winner->front()].text;
+    track.cls = sightings[winner->front()].cls;
+    track.sightings = *winner;
+    track.frame_sets = best.first;
+    track.misreads = misreads;
+    for (size_t i : *winner) track.place += cast[i]->centre;
+    track.place /= static_cast<double>(winner->size());
+    candidates.push_back(std::move(track));
   }
 
   // One reading at several places: a loop when they are near, else a duplicate.

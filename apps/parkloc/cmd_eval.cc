@@ -1,6 +1,7 @@
 // parkloc eval DATASET      : the paper's tables 3, 5, 8 and 10 and the report.
 // parkloc eval ocr DATASET  : table 3 only (text spotting), printed and as JSON.
 // parkloc eval birdseye DATASET : table 3 on the stitched top-down images, four orientations.
+// parkloc eval map, parkloc eval photos: cmd_eval_map.cc, cmd_eval_photos.cc.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -265,8 +266,9 @@ const bool registered = app::registerCommand([](CLI::App& parent) {
   avm_cmd->callback([avm_args, avm_scale] { runEvalBirdsEye(*avm_args, *avm_scale); });
 
   CLI::App* map_cmd = app::addEvalMap(*cmd);
-  cmd->callback([args, ocr_cmd, avm_cmd, map_cmd] {
-    if (ocr_cmd->parsed() || avm_cmd->parsed() || map_cmd->parsed()) return;
+  CLI::App* photos_cmd = app::addEvalPhotos(*cmd);
+  cmd->callback([args, ocr_cmd, avm_cmd, map_cmd, photos_cmd] {
+    if (ocr_cmd->parsed() || avm_cmd->parsed() || map_cmd->parsed() || photos_cmd->parsed()) return;
     if (args->dataset.empty()) throw CLI::RequiredError("dataset");
     args->command_line = fmt::format(
         "parkloc eval {} --split {}{}{}{}{}{}", args->dataset, args->split,

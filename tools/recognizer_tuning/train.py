@@ -18,6 +18,11 @@ take part in the softmax. An L2 pull toward the stock values keeps it from forge
 epoch with the best val exact match, decoding over blank + alphabet only, is written: convs and
 batch norms whole, the classifier's columns as NAME plus NAME#columns (float16 values), which
 tools/detector_tuning/apply_tuning.py puts into the ONNX model at set-up.
+
+--keep FOLDER... names crops of ordinary text (generic_crops.py) that hold the model to its
+base's reading: per CTC step, cross-entropy over all classes toward the base model's best class
+at that step, weighted by --keep-weight. Learning the garage's text moves the neck that every
+class reads through; without this the tuned model forgets real text (`parkloc eval photos`).
 """
 import argparse
 import os
@@ -163,6 +168,45 @@ class Split:
         return x, [self.targets[i] for i in indices]
 
 
+def base_steps(net, split, cut, logits_at, batch):
+    """For each crop of `split`, the base model's best class at each CTC step (int64 [T]),
+    before any weight learns: what --keep holds the model to."""
+    best = [None] * len(split)
+    with torch.no_grad():
+        for indices in split.batches(batch):
+            x = torch.stack([split.features[i] for i in indices]).float()
+            for i, b in zip(indices, net(x, start=cut, stop=logits_at).argmax(-1)):
+                best[i] = b.clone()
+    return best
+
+
+def keep_batches(keep, size, rng):
+    """Endless shuffled batches of the --keep crops (equal T within a batch)."""
+    while True:
+        for indices in keep.batches(size, rng):
+            yield indices
+
+
+def keep_loss(net, keep, targets, indices, cut, logits_at):
+    x = torch.stack([keep.features[i] for i in indices]).float()
+    logits = net(x, start=cut, stop=logits_at)
+    y = torch.stack([targets[i] for i in indices])
+    return F.cross_entropy(logits.reshape(-1, logits.shape[-1]), y.reshape(-1))
+
+
+def keep_agreement(net, keep, targets, cut, logits_at, characters, batch):
+    """Share of --keep crops read exactly as the base model reads them."""
+    same = 0
+    with torch.no_grad():
+        for indices in keep.batches(batch):
+            x = torch.stack([keep.features[i] for i in indices]).float()
+            best = net(x, start=cut, stop=logits_at).argmax(-1)
+            for k, i in enumerate(indices):
+                same += (read_text(best[k].tolist(), characters) ==
+                         read_text(targets[i].tolist(), characters))
+    return same / max(len(keep), 1)
+
+
 def ctc_min_steps(target):
     return len(target) + sum(a == b for a, b in zip(target, target[1:]))
 
@@ -251,13 +295,19 @@ def pull_to_stock(learned, stock):
     return sum(((p - stock[name]) ** 2).sum() for name, p in learned.items())
 
 
-def train_epoch(net, split, logits_at, learned, stock, opt, args, rng):
+def train_epoch(net, split, logits_at, learned, stock, opt, args, rng, keep=None):
+    """keep: (split, base targets, batch generator) of the --keep crops, or None."""
     total, batches = 0.0, split.batches(args.batch, rng)
     for indices in batches:
         x, targets = split.inputs(indices)
         loss = ctc_loss(net(x, start=args.features, stop=logits_at), targets)
+        objective = loss + args.pull * pull_to_stock(learned, stock)
+        if keep:
+            keep_split, keep_targets, keep_gen = keep
+            objective = objective + args.keep_weight * keep_loss(
+                net, keep_split, keep_targets, next(keep_gen), args.features, logits_at)
         opt.zero_grad()
-        (loss + args.pull * pull_to_stock(learned, stock)).backward()
+        objective.backward()
         opt.step()
         total += loss.item()
     return total / max(len(batches), 1)
@@ -311,6 +361,9 @@ def main():
     ap.add_argument("--extra-pad", type=int, default=16,
                     help="train crops get 0..this many px of extra right padding (beyond "
                          "INPUT_WIDTH only), as the C++ batches of similar width give them")
+    ap.add_argument("--keep", nargs="*", default=[],
+                    help="crop folders of ordinary text the model keeps reading as its base does")
+    ap.add_argument("--keep-weight", type=float, default=1.0)
     ap.add_argument("--extract-batch", type=int, default=32)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--threads", type=int, default=1,
@@ -336,6 +389,15 @@ def main():
         if outside:
             print(f"{label}: {outside} texts have characters outside --alphabet", flush=True)
 
+    keep = None
+    if args.keep:
+        keep_split = Split(net, load_split(args.keep), class_of, 0, rng, args.extract_batch,
+                           args.features)
+        keep_targets = base_steps(net, keep_split, args.features, logits_at, args.batch)
+        keep = (keep_split, keep_targets, keep_batches(keep_split, args.batch, rng))
+        print(f"keep: {len(keep_split)} crops of ordinary text, the base's reading the target",
+              flush=True)
+
     learned = learned_tensors(net, columns, args.learn_from)
     stock = {name: p.detach().clone() for name, p in learned.items()}
     print(f"learning {len(learned)} tensors, {sum(p.numel() for p in learned.values())} values "
@@ -345,6 +407,7 @@ def main():
     metadata = {"base": os.path.basename(args.base), "train": args.train, "val": args.val,
                 "train_crops": len(train), "val_crops": len(val), "alphabet": args.alphabet,
                 "features": args.features, "learn_from": args.learn_from, "lr": args.lr, "pull": args.pull, "batch": args.batch,
+                "keep": args.keep, "keep_weight": args.keep_weight,
                 "before": {"val_exact_all": before[0], "val_exact_alphabet": before[1],
                            "val_loss": before[2]}}
     best, best_epoch = before, 0
@@ -353,10 +416,15 @@ def main():
     opt = torch.optim.Adam(list(learned.values()), lr=args.lr)
     for epoch in range(1, args.epochs + 1):
         t0 = time.time()
-        train_loss = train_epoch(net, train, logits_at, learned, stock, opt, args, rng)
+        train_loss = train_epoch(net, train, logits_at, learned, stock, opt, args, rng, keep)
         seconds = time.time() - t0
         result = evaluate(net, val, args.features, logits_at, characters, columns, args.batch)
         report(f"epoch {epoch} (train loss {train_loss:.4f}, {seconds:.1f} s)", *result)
+        if keep:
+            agreement = keep_agreement(net, keep[0], keep[1], args.features, logits_at,
+                                       characters, args.batch)
+            print(f"epoch {epoch}: --keep crops read as the base reads them: {agreement:.3f}",
+                  flush=True)
         if result[1] > best[1]:
             best, best_epoch = result, epoch
             save(learned, columns, args.out,

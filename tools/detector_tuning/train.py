@@ -7,6 +7,11 @@ Only the layers from --train-from on (by default the FPN neck and the DB head) l
 backbone keeps PaddleOCR's weights, so what the network knows of scene text stays, and the
 file written holds only the tensors that changed. apply_tuning.py puts them into the ONNX model
 at set-up. Loss as DB trains its probability map: balanced BCE (hard negatives 3:1) + dice.
+
+--keep DIR (images of ordinary text, generic_scenes.py) with --keep-base MODEL (PaddleOCR's
+detector) adds, at every step, the BCE between the map learned and the base model's map on
+random crops of those images, weighted by --keep-weight: the fine-tuned detector keeps finding
+the text PaddleOCR's finds outside a garage (`parkloc eval photos`).
 """
 import argparse
 import os
@@ -135,6 +140,31 @@ def instance_recall(net, samples, threshold=0.3):
     return found / max(total, 1), total, false_px / max(all_px, 1)
 
 
+def keep_crop(image, crop, rng):
+    """A random crop of a --keep image at a random scale, as the detector meets text of any
+    size."""
+    scale = rng.uniform(0.5, 1.5)
+    h, w = image.shape[:2]
+    m = np.array([[scale, 0, 0], [0, scale, 0]], np.float32)
+    m[0, 2] = -rng.uniform(0, max(0.0, w * scale - crop))
+    m[1, 2] = -rng.uniform(0, max(0.0, h * scale - crop))
+    return cv2.warpAffine(image, m, (crop, crop), flags=cv2.INTER_LINEAR,
+                          borderMode=cv2.BORDER_REPLICATE)
+
+
+def keep_agreement(net, base, images, threshold=0.3):
+    """Of the pixels the base model's map puts above the threshold on the --keep check
+    images, the share the learned map also does: how much of ordinary text it still finds."""
+    both = base_on = 0
+    with torch.no_grad():
+        for image in images:
+            x = torch.from_numpy(normalise(image))[None]
+            on = base(x)[0, 0] > threshold
+            both += int((on & (net(x)[0, 0] > threshold)).sum())
+            base_on += int(on.sum())
+    return both / max(base_on, 1)
+
+
 def save(net, names, path, metadata):
     tensors = {n: net.weight(n).detach().numpy().astype(np.float16) for n in names}
     tmp = path + ".tmp.npz"
@@ -162,6 +192,11 @@ def main():
     ap.add_argument("--val-images", type=int, default=60)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--keep", default="",
+                    help="folder of images of ordinary text (index.txt) whose map the model "
+                         "keeps as --keep-base draws it")
+    ap.add_argument("--keep-base", default="", help="the model whose map --keep holds to")
+    ap.add_argument("--keep-weight", type=float, default=1.0)
     ap.add_argument("--keep-checkpoints", action="store_true",
                     help="also write OUT's stem + .stepN.npz at every check and at the end, to "
                          "choose by `parkloc eval ocr` rather than by the quick check")
@@ -185,6 +220,19 @@ def main():
     val = load_split(args.val)
     val = val[:: max(1, len(val) // args.val_images)][: args.val_images]
     print(f"{len(train)} train views, {len(val)} val views", flush=True)
+    keep_images, keep_check, keep_base = [], [], None
+    if args.keep:
+        if not args.keep_base:
+            raise SystemExit("train.py: --keep needs --keep-base")
+        keep_base = OnnxGraph(args.keep_base)
+        for n in keep_base.parameter_names():
+            keep_base.weight(n).requires_grad_(False)
+        with open(os.path.join(args.keep, "index.txt")) as f:
+            keep_images = [read_view(os.path.join(args.keep, l.strip())) for l in f if l.strip()]
+        keep_check = keep_images[-20:]  # the check's images, never trained on
+        keep_images = keep_images[:-20]
+        print(f"keep: {len(keep_images)} images of ordinary text, {len(keep_check)} to check; "
+              f"base agreement {keep_agreement(net, keep_base, keep_check):.3f}", flush=True)
     r, n, fp = instance_recall(net, val)
     print(f"before: val core recall {r:.3f} of {n}, false pixels {fp:.4f}", flush=True)
     best = (r - 10 * fp, 0)
@@ -210,6 +258,15 @@ def main():
         for g in opt.param_groups:
             g["lr"] = lr
         loss = db_loss(net(x), t, w)
+        if keep_images:
+            k = torch.from_numpy(np.stack([
+                normalise(keep_crop(keep_images[rng.randrange(len(keep_images))], args.crop, rng))
+                for _ in range(max(1, args.batch // 2))]))
+            with torch.no_grad():
+                target = keep_base(k)
+            p = net(k).clamp(1e-6, 1 - 1e-6)
+            keep_term = -(target * torch.log(p) + (1 - target) * torch.log(1 - p)).mean()
+            loss = loss + args.keep_weight * keep_term
         opt.zero_grad()
         loss.backward()
         opt.step()
@@ -220,6 +277,9 @@ def main():
         if step % args.val_every == 0:
             r, n, fp = instance_recall(net, val)
             print(f"step {step}: val core recall {r:.3f} of {n}, false pixels {fp:.4f}", flush=True)
+            if keep_base is not None:
+                print(f"step {step}: base agreement on ordinary text "
+                      f"{keep_agreement(net, keep_base, keep_check):.3f}", flush=True)
             if args.keep_checkpoints:
                 save(net, learn, checkpoint_path(args.out, step),
                      {"step": step, "val_recall": r, "val_false_px": fp})

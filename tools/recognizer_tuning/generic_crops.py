@@ -83,6 +83,12 @@ def colours(rng):
             return fg, bg
 
 
+def compress(img, quality):
+    """A JPEG round trip at `quality`: the blocks of a camera's or a web page's codec."""
+    ok, buf = cv2.imencode(".jpg", img, [cv2.IMWRITE_JPEG_QUALITY, quality])
+    return cv2.imdecode(buf, cv2.IMREAD_COLOR)
+
+
 def render(rng, text, font_path):
     size = rng.randint(26, 44)
     font = ImageFont.truetype(font_path, size)
@@ -123,8 +129,7 @@ def render(rng, text, font_path):
         noise = np.random.default_rng(rng.randint(0, 2**31)).normal(0, rng.uniform(2, 10), img.shape)
         img = np.clip(img.astype(np.float32) + noise, 0, 255).astype(np.uint8)
     if rng.random() < 0.5:
-        ok, buf = cv2.imencode(".jpg", img, [cv2.IMWRITE_JPEG_QUALITY, rng.randint(30, 90)])
-        img = cv2.imdecode(buf, cv2.IMREAD_COLOR)
+        img = compress(img, rng.randint(30, 90))
     return img
 
 

@@ -45,24 +45,24 @@ const std::vector<std::string> kRowKeys{"configured", "floor_detector", "band_de
 std::vector<ModelRow> modelRows(const config::Config& config) {
   const ocr::PpOcrOptions configured = config::spotterOptions(config);
   const std::string dir = config::modelDirectory(config.models);
-  std::vector<ModelRow> rows{
-      {"configured", "as configured (detector and first recognizer)", configured}};
+  // The configured file of a role, else parkloc's shipped one (a role the configuration leaves
+  // empty, as the band detector by default).
+  const auto chosen = [](const std::string& configured_file, const std::string& shipped) {
+    return configured_file.empty() ? shipped : configured_file;
+  };
   ModelRow floor{"floor_detector", "floor detector as the detector", configured};
-  floor.options.models.detection = configured.models.floor_detection.empty()
-                                       ? ocr::floorDetectorIn(dir)
-                                       : configured.models.floor_detection;
-  rows.push_back(floor);
+  floor.options.models.detection =
+      chosen(configured.models.floor_detection, ocr::floorDetectorIn(dir));
   ModelRow band{"band_detector", "band detector as the detector", configured};
-  band.options.models.detection = configured.models.band_detection.empty()
-                                      ? ocr::bandDetectorIn(dir)
-                                      : configured.models.band_detection;
-  rows.push_back(band);
+  band.options.models.detection =
+      chosen(configured.models.band_detection, ocr::bandDetectorIn(dir));
   ModelRow tuned{"second_recognizer", "second recognizer reading first", configured};
-  tuned.options.models.recognition = configured.models.fallback_recognition.empty()
-                                         ? ocr::tunedRecognizerIn(dir)
-                                         : configured.models.fallback_recognition;
-  rows.push_back(tuned);
-  return rows;
+  tuned.options.models.recognition =
+      chosen(configured.models.fallback_recognition, ocr::tunedRecognizerIn(dir));
+  return {{"configured", "as configured (detector and first recognizer)", configured},
+          floor,
+          band,
+          tuned};
 }
 
 void run(const EvalPhotosArgs& a) {

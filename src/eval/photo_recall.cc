@@ -5,20 +5,12 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
-#include <sstream>
 
 #include "common/error.h"
+#include "common/split_fields.h"
 
 namespace parkloc::eval {
 namespace {
-
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> parts;
-  std::stringstream in(s);
-  for (std::string part; std::getline(in, part, sep);) parts.push_back(part);
-  if (!s.empty() && s.back() == sep) parts.emplace_back();
-  return parts;
-}
 
 std::string upper(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
@@ -41,14 +33,14 @@ std::vector<PhotoLabels> loadPhotoLabels(const std::string& folder) {
   for (int line_no = 1; std::getline(in, line); ++line_no) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
-    const std::vector<std::string> fields = split(line, '\t');
+    const std::vector<std::string> fields = splitFields(line, '\t');
     if (fields.size() < 4 || fields[0].empty())
       throw InputError(
           fmt::format("{}: line {}: expected FILE, SOURCE_REPO, SOURCE_PATH and "
                       "TOKENS separated by tabs",
                       path, line_no));
     PhotoLabels photo{fields[0], {}};
-    for (std::string token : split(fields[3], '|')) {
+    for (std::string token : splitFields(fields[3], '|')) {
       if (token.rfind("[P]", 0) == 0) token.erase(0, 3);
       if (!token.empty()) photo.tokens.push_back(token);
     }

@@ -5,22 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgcodecs.hpp>
-#include <sstream>
 
 #include "common/error.h"
+#include "common/split_fields.h"
 #include "geometry/pose.h"
 
 namespace parkloc::run {
 namespace {
-
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream in(text);
-  while (std::getline(in, part, separator)) parts.push_back(part);
-  if (!text.empty() && text.back() == separator) parts.emplace_back();
-  return parts;
-}
 
 std::string trim(const std::string& s) {
   const auto first = s.find_first_not_of(" \t");
@@ -75,7 +66,7 @@ void expectFields(const std::string& item, const std::vector<std::string>& field
 
 // FAKE@REAL: the text read in place of the real one.
 SpoofedSign fakeAtReal(const std::string& item, const std::string& text) {
-  const auto at = split(text, '@');
+  const auto at = splitFields(text, '@');
   if (at.size() != 2 || at[0].empty() || at[1].empty())
     bad(item, fmt::format("'{}' is not FAKE@REAL", text));
   if (at[0] == at[1]) bad(item, "the fake text equals the real one");
@@ -83,7 +74,7 @@ SpoofedSign fakeAtReal(const std::string& item, const std::string& text) {
 }
 
 void parseItem(const std::string& item, InputFaults& f) {
-  const auto fields = split(item, ':');
+  const auto fields = splitFields(item, ':');
   const std::string& kind = fields[0];
   if (kind == "dark" || kind == "freeze") {
     expectFields(item, fields, 3, fmt::format("{}:CAMERA:T0-T1", kind).c_str());
@@ -159,7 +150,7 @@ InputFaults parseFaults(const std::vector<std::string>& specs) {
   InputFaults faults;
   for (const auto& spec : specs) {
     if (trim(spec).empty()) throw InputError("--inject: empty fault specification");
-    for (const auto& raw : split(spec, ',')) {
+    for (const auto& raw : splitFields(spec, ',')) {
       const std::string item = trim(raw);
       if (item.empty()) throw InputError(fmt::format("--inject: empty fault in '{}'", spec));
       parseItem(item, faults);
@@ -188,8 +179,7 @@ std::string describeFaults(const InputFaults& f) {
     lines.push_back(fmt::format("yaw rate biased by {} rad/s", f.yaw_rate_bias));
   for (const auto& s : f.spoofs)
     lines.push_back(s.during ? fmt::format("text '{}' read as '{}' from {} s to {} s", s.real,
-                                           s.fake, fmtTime(s.during->begin),
-                                           fmtTime(s.during->end))
+                                           s.fake, fmtTime(s.during->begin), fmtTime(s.during->end))
                              : fmt::format("sign '{}' shows '{}' (spoofed)", s.real, s.fake));
   for (const auto& k : f.kidnaps)
     lines.push_back(fmt::format("kidnap at {} s over {} m", fmtTime(k.time), k.distance_m));

@@ -102,10 +102,16 @@ def augment(image, care, dont, crop, rng):
     return out, care, dont
 
 
+def binary_cross_entropy(p, target, eps=1e-6):
+    """Per pixel, of the map `p` against `target` (0..1), p kept off 0 and 1."""
+    p = p.clamp(eps, 1 - eps)
+    return -(target * torch.log(p) + (1 - target) * torch.log(1 - p))
+
+
 def db_loss(p, target, weight):
     eps = 1e-6
+    bce = binary_cross_entropy(p, target, eps)
     p = p.clamp(eps, 1 - eps)
-    bce = -(target * torch.log(p) + (1 - target) * torch.log(1 - p))
     pos = (target > 0.5) & (weight > 0)
     neg = (target < 0.5) & (weight > 0)
     n_pos = int(pos.sum())
@@ -264,8 +270,7 @@ def main():
                 for _ in range(max(1, args.batch // 2))]))
             with torch.no_grad():
                 target = keep_base(k)
-            p = net(k).clamp(1e-6, 1 - 1e-6)
-            keep_term = -(target * torch.log(p) + (1 - target) * torch.log(1 - p)).mean()
+            keep_term = binary_cross_entropy(net(k), target).mean()
             loss = loss + args.keep_weight * keep_term
         opt.zero_grad()
         loss.backward()

@@ -174,7 +174,7 @@ def base_steps(net, split, cut, logits_at, batch):
     best = [None] * len(split)
     with torch.no_grad():
         for indices in split.batches(batch):
-            x = torch.stack([split.features[i] for i in indices]).float()
+            x, _ = split.inputs(indices)
             for i, b in zip(indices, net(x, start=cut, stop=logits_at).argmax(-1)):
                 best[i] = b.clone()
     return best
@@ -188,7 +188,7 @@ def keep_batches(keep, size, rng):
 
 
 def keep_loss(net, keep, targets, indices, cut, logits_at):
-    x = torch.stack([keep.features[i] for i in indices]).float()
+    x, _ = keep.inputs(indices)
     logits = net(x, start=cut, stop=logits_at)
     y = torch.stack([targets[i] for i in indices])
     return F.cross_entropy(logits.reshape(-1, logits.shape[-1]), y.reshape(-1))
@@ -199,7 +199,7 @@ def keep_agreement(net, keep, targets, cut, logits_at, characters, batch):
     same = 0
     with torch.no_grad():
         for indices in keep.batches(batch):
-            x = torch.stack([keep.features[i] for i in indices]).float()
+            x, _ = keep.inputs(indices)
             best = net(x, start=cut, stop=logits_at).argmax(-1)
             for k, i in enumerate(indices):
                 same += (read_text(best[k].tolist(), characters) ==

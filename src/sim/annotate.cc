@@ -110,8 +110,8 @@ std::vector<io::LabelInstance> annotateImage(const Garage& garage, int level,
     std::optional<double> ink_snr;
     if (item.floor_decal >= 0 && options.floor_ink_contrast && options.channel_noise > 0.0) {
       const Eigen::Vector2d centre = 0.25 * (poly[0] + poly[1] + poly[2] + poly[3]);
-      const InkContrast ink{options.floor_ink_contrast(item.floor_decal, centre),
-                            options.channel_noise};
+      InkContrast ink{options.floor_ink_contrast(item.floor_decal, centre), options.channel_noise};
+      if (options.through_camera) ink = options.through_camera(ink, poly);
       ink_snr = featureSnr(poly, characters, ink, options.legibility);
       legible = legible && *ink_snr >= options.legibility.min_feature_snr;
     }

@@ -27,6 +27,11 @@ struct AnnotateOptions {
   // noise_sigma). The label then carries the feature's SNR (io::LabelInstance::ink_snr).
   std::function<double(int decal, const Eigen::Vector2d& pixel)> floor_ink_contrast;
   double channel_noise = 0.0;
+  // What the camera's processing and the codec make of that contrast at the text's image
+  // polygon (sim/ink_through_camera.h), when set: the rule then weighs what the final image
+  // carries, and the label's ink_snr is that image's.
+  std::function<InkContrast(const InkContrast& scene, const geometry::TextPolygon& polygon)>
+      through_camera;
   // Painted floor text that kept less than this share of its ink (Decal::ink_kept) is not
   // legible however large and sharp: with most of every glyph erased no reader makes out the
   // digits. 0: no such rule. The dataset writer sets it for drives whose appearance fades the

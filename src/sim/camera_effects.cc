@@ -65,6 +65,11 @@ double CameraEffects::huntingGain(size_t camera, double t) const {
 }
 
 void CameraEffects::apply(cv::Mat& bgr, size_t camera, double t, uint64_t frame_seed) const {
+  develop(bgr, camera, t);
+  compress(bgr, camera, frame_seed);
+}
+
+void CameraEffects::develop(cv::Mat& bgr, size_t camera, double t) const {
   if (!active_) return;
   CV_Assert(bgr.type() == CV_8UC3);
   const cv::Size full = bgr.size();
@@ -144,6 +149,9 @@ void CameraEffects::apply(cv::Mat& bgr, size_t camera, double t, uint64_t frame_
       }
     cv::LUT(bgr, lut, bgr);
   }
+}
+
+void CameraEffects::compress(cv::Mat& bgr, size_t camera, uint64_t frame_seed) const {
   if (a_.compression > 0.0f) {
     // The codec of a car's camera stream at a low bit rate: 8x8 blocks, chroma at half size.
     std::mt19937_64 rng(frame_seed ^ 0xb10c4ULL ^ camera);

@@ -25,6 +25,11 @@ class CameraEffects {
   // Applies the effects to camera `camera`'s image at drive time `t` seconds; `frame_seed`
   // makes the frame's draws reproducible.
   void apply(cv::Mat& bgr, size_t camera, double t, uint64_t frame_seed) const;
+  // apply() in its two steps: the optics and the image processor (exposure, white balance,
+  // tone curve), then the video codec. Between them the image is what the sensor's pipeline
+  // made of the scene before any compression (sim/ink_through_camera.h compares the two).
+  void develop(cv::Mat& bgr, size_t camera, double t) const;
+  void compress(cv::Mat& bgr, size_t camera, uint64_t frame_seed) const;
 
   // The per-channel gains (B, G, R) of the drive's white balance for `camera`.
   cv::Vec3f whiteBalanceGains(size_t camera) const { return white_balance_.at(camera); }

@@ -9,9 +9,9 @@
 #include <fstream>
 #include <future>
 #include <mutex>
-#include <random>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <random>
 #include <thread>
 
 #include "common/error.h"
@@ -30,6 +30,7 @@
 #include "sim/drive.h"
 #include "sim/garage.h"
 #include "sim/garage_appearance.h"
+#include "sim/ink_through_camera.h"
 #include "sim/level_schedule.h"
 #include "sim/ramp_level.h"
 #include "sim/renderer.h"
@@ -45,6 +46,19 @@ uint64_t mix(uint64_t x) {
   x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
   x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
   return x ^ (x >> 31);
+}
+
+// Writes `image` as a JPEG of `quality` to `path` and returns the file's bytes, so that what
+// is measured on the image is what was written.
+std::vector<uint8_t> writeJpeg(const std::string& path, const cv::Mat& image, int quality) {
+  std::vector<uint8_t> bytes;
+  if (!cv::imencode(".jpg", image, bytes, {cv::IMWRITE_JPEG_QUALITY, quality}))
+    throw IoError(fmt::format("simulate: cannot encode {}", path));
+  std::ofstream f(path, std::ios::binary);
+  if (!f.write(reinterpret_cast<const char*>(bytes.data()),
+               static_cast<std::streamsize>(bytes.size())))
+    throw IoError(fmt::format("simulate: cannot write {}", path));
+  return bytes;
 }
 
 std::string rotationSubset(double rotation_deg) {
@@ -298,9 +312,10 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
     // Cameras not triggered together: each camera's capture time in frame set k.
     const bool staggered = !ds.camera_delay_s.empty() || ds.camera_jitter_s > 0.0;
     if (staggered && birdseye)
-      throw InputError(fmt::format("simulate: drive {} has camera delays; a stitched bird's-eye "
-                                   "image needs the cameras triggered together",
-                                   plan.name));
+      throw InputError(
+          fmt::format("simulate: drive {} has camera delays; a stitched bird's-eye "
+                      "image needs the cameras triggered together",
+                      plan.name));
     std::mt19937_64 jitter_rng(seed ^ 0x7177e7ULL);
     std::uniform_real_distribution<double> jitter(0.0, ds.camera_jitter_s);
     const auto render_start = std::chrono::steady_clock::now();
@@ -339,15 +354,24 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
       } else {
         images = renderer.render(state.pose, frame_seed);
       }
-      for (size_t c = 0; c < images.size(); ++c) effects.apply(images[c], c, capture[c], frame_seed);
+      // The camera's processing, its stages kept when the labels' legibility is judged on the
+      // image a reader gets (sim/ink_through_camera.h).
+      const bool on_image = scenario.legibility_on_image;
+      std::vector<CameraStages> stages(images.size());
+      for (size_t c = 0; c < images.size(); ++c) {
+        if (on_image) stages[c].scene = images[c].clone();
+        effects.develop(images[c], c, capture[c]);
+        if (on_image) stages[c].developed = images[c].clone();
+        effects.compress(images[c], c, frame_seed);
+      }
       const std::string frame_stem = io::timestampStem(t);
       std::vector<io::ImageLabels> frame_labels;
       for (size_t c = 0; c < rig.cameras.size(); ++c) {
         const auto& cam = rig.cameras[c];
         const std::string stem = io::timestampStem(capture[c]);
         const std::string image_path = (dir / "images" / cam.name / (stem + ".jpg")).string();
-        if (!cv::imwrite(image_path, images[c], {cv::IMWRITE_JPEG_QUALITY, scenario.jpeg_quality}))
-          throw IoError(fmt::format("simulate: cannot write {}", image_path));
+        const std::vector<uint8_t> jpeg = writeJpeg(image_path, images[c], scenario.jpeg_quality);
+        if (on_image) stages[c].final = cv::imdecode(jpeg, cv::IMREAD_COLOR);
         io::ImageLabels labels;
         labels.camera = cam.name;
         labels.timestamp = capture[c];
@@ -359,6 +383,10 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
           return renderer.floorInkContrast(c, pixel, decal);
         };
         annotate.channel_noise = light.noise_sigma;
+        if (on_image)
+          annotate.through_camera = [&](const InkContrast& ink, const geometry::TextPolygon& p) {
+            return inkThroughCamera(ink, stages[c], p).contrast;
+          };
         if (look.faded > 0.0f) annotate.min_ink_kept = kMinInkKeptFaded;
         // On the ramp no text is in view.
         if (stretch != Stretch::kRamp)

@@ -54,9 +54,8 @@ double featureSnr(const geometry::TextPolygon& p, int characters, const InkContr
   const double pitch = geometry::readingLengthPx(p) / std::max(1, characters);
   const double half_cycle = 0.5 / options.cycles_per_character;  // of a pitch, of a height
   const double area = std::max(0.0, pitch * half_cycle) * std::max(0.0, height * half_cycle);
-  // Var(0.299 R + 0.587 G + 0.114 B) for independent channels of equal variance.
-  const double luma_noise =
-      ink.channel_noise * std::sqrt(0.299 * 0.299 + 0.587 * 0.587 + 0.114 * 0.114);
+  const double white = ink.channel_noise * kLumaNoisePerChannelNoise;
+  const double luma_noise = std::sqrt(white * white + ink.block_noise * ink.block_noise * area);
   const double signal = std::abs(ink.luma_levels) * std::sqrt(area);
   if (!(luma_noise > 0.0)) return signal > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
   return signal / luma_noise;

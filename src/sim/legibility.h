@@ -10,6 +10,7 @@
 // the usual limiting-resolution modulation of 10 %. Nor is size enough when the ink hardly
 // differs from the ground: worn paint in weak light drowns in the sensor's noise, which the
 // contrast rule (inkStandsOut) asks of painted floor text.
+#include <cmath>
 #include <string>
 
 #include "geometry/rig.h"
@@ -56,12 +57,21 @@ bool isLegible(const geometry::TextPolygon& polygon, int characters, const Image
 struct InkContrast {
   double luma_levels = 0.0;    // ink against the ground under it, 8-bit luma
   double channel_noise = 0.0;  // Gaussian noise per colour channel, 8-bit levels
+  // Error in luma levels that is the same over a whole reading feature, as a video codec's
+  // 8x8 blocks are: summing over the feature's pixels does not average it down.
+  double block_noise = 0.0;
 };
+
+// The standard deviation of BT.601 luma (0.299 R + 0.587 G + 0.114 B) per unit of independent
+// noise of equal variance in each colour channel.
+inline const double kLumaNoisePerChannelNoise =
+    std::sqrt(0.299 * 0.299 + 0.587 * 0.587 + 0.114 * 0.114);
 
 // The signal-to-noise ratio of one reading feature of the text: half a cycle of
 // `cycles_per_character` along the reading direction by half a cycle across the glyph height
 // (the same features the size rule asks the image to carry), its ink contrast summed over its
-// pixels against white noise, the noise of BT.601 luma from independent channels.
+// pixels against white noise, the noise of BT.601 luma from independent channels, and the
+// block noise summed over the same pixels without averaging.
 double featureSnr(const geometry::TextPolygon& polygon, int characters, const InkContrast& ink,
                   const LegibilityOptions& options = {});
 

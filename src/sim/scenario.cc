@@ -76,7 +76,8 @@ DriveSpec parseDrive(const YAML::Node& node, const AppearanceOptions& appearance
   read(node, "repeat_of", d.repeat_of, where);
   read(node, "camera_jitter_s", d.camera_jitter_s, where);
   if (const YAML::Node delays = node["camera_delay_s"]) {
-    if (!delays.IsMap()) throw InputError(where + ": field 'camera_delay_s' must map cameras to seconds");
+    if (!delays.IsMap())
+      throw InputError(where + ": field 'camera_delay_s' must map cameras to seconds");
     for (const auto& item : delays) {
       const std::string camera = item.first.as<std::string>();
       double delay = 0.0;
@@ -327,6 +328,7 @@ Scenario parseScenario(const std::string& yaml_text, const std::string& source_n
   read(root, "frame_rate", s.frame_rate, source_name);
   read(root, "odometry_rate", s.odometry_rate, source_name);
   read(root, "jpeg_quality", s.jpeg_quality, source_name);
+  read(root, "legibility_on_image", s.legibility_on_image, source_name);
   read(root, "rig", s.rig, source_name);
   if (!(s.frame_rate >= 1.0 && s.frame_rate <= 60.0))
     throw InputError(source_name + ": field 'frame_rate' out of range");
@@ -349,7 +351,8 @@ Scenario parseScenario(const std::string& yaml_text, const std::string& source_n
     for (size_t d = 0; d < s.garages[g].drives.size(); ++d) {
       const DriveSpec& drive = s.garages[g].drives[d];
       double spread = drive.camera_jitter_s;
-      for (const auto& [camera, delay] : drive.camera_delay_s) spread = std::max(spread, delay + drive.camera_jitter_s);
+      for (const auto& [camera, delay] : drive.camera_delay_s)
+        spread = std::max(spread, delay + drive.camera_jitter_s);
       if (spread >= 0.4 / s.frame_rate)
         throw InputError(fmt::format(
             "{} garage {} drive {}: camera delays and jitter span {:.3f} s, more than 0.4 frame "

@@ -93,6 +93,11 @@ struct Scenario {
   double frame_rate = 10.0;     // camera frames per second
   double odometry_rate = 50.0;  // wheel odometry samples per second
   int jpeg_quality = 90;
+  // Where floor text's legibility is judged (the labels' "legible" flag): on the image as
+  // written, after the camera's processing and every codec (sim/ink_through_camera.h), or
+  // (false) on the rendered scene, the ink's contrast against the sensor's noise. The scene
+  // misses what the camera's effects and a hard codec do to the strokes.
+  bool legibility_on_image = false;
   // The rig's calibration file (io/calibration_yaml.h) the drives are recorded with; a
   // relative path in a scenario file is relative to that file's folder. Empty: the default
   // rig (geometry::defaultRig()).

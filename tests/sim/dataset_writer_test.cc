@@ -129,6 +129,60 @@ TEST(DatasetWriter, WritingOneSplitKeepsTheOthersListed) {
   fs::remove_all(out);
 }
 
+// Writes two frame sets of the demo drive and returns, per file of the first camera, the image
+// bytes and the number of parking numbers labelled legible.
+struct Written {
+  std::vector<std::string> images;
+  int legible_numbers = 0;
+};
+Written writeDemo(const Scenario& s, const std::string& tag) {
+  namespace fs = std::filesystem;
+  const fs::path out = fs::temp_directory_path() /
+                       ("parkloc_sim_legibility_" + tag + "_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  DatasetOptions options;
+  options.out_dir = out.string();
+  options.max_frames = 2;
+  writeDataset(s, options);
+  const io::Sequence seq((out / "sequences" / planSequences(s)[0].name).string());
+  Written w;
+  for (size_t k = 0; k < seq.timestamps().size(); ++k)
+    for (const auto& cam : seq.cameras()) {
+      std::ifstream f(seq.imagePath(k, cam), std::ios::binary);
+      w.images.emplace_back(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+      const auto labels = seq.loadLabels(k, cam);
+      if (!labels) continue;
+      for (const auto& inst : labels->instances)
+        if (inst.legible && inst.cls == map::TextClass::kParkingNumber) ++w.legible_numbers;
+    }
+  fs::remove_all(out);
+  return w;
+}
+
+TEST(DatasetWriter, LegibilityOnTheImageCountsTheCodecsBlocks) {
+  Scenario s = demoScenario();
+  s.garages[0].slots_per_row = 9;
+  s.garages[0].drives[0].appearance.compression = 1.0f;  // JPEG at about quality 15
+  const Written on_scene = writeDemo(s, "scene");
+  s.legibility_on_image = true;
+  const Written on_image = writeDemo(s, "image");
+  // The same images, judged differently: the codec's blocks leave fewer numbers legible.
+  EXPECT_EQ(on_scene.images, on_image.images);
+  EXPECT_GT(on_scene.legible_numbers, 4);
+  EXPECT_LT(on_image.legible_numbers, on_scene.legible_numbers);
+}
+
+TEST(DatasetWriter, LegibilityOnACleanImageKeepsMostNumbers) {
+  Scenario s = demoScenario();
+  s.garages[0].slots_per_row = 9;
+  const Written on_scene = writeDemo(s, "clean_scene");
+  s.legibility_on_image = true;
+  const Written on_image = writeDemo(s, "clean_image");
+  EXPECT_EQ(on_scene.images, on_image.images);
+  EXPECT_GE(on_image.legible_numbers, 0.8 * on_scene.legible_numbers);
+  EXPECT_LE(on_image.legible_numbers, on_scene.legible_numbers);
+}
+
 TEST(DatasetWriter, RejectsBadOptions) {
   DatasetOptions options;
   EXPECT_THROW(writeDataset(demoScenario(), options), InputError);
@@ -157,8 +211,8 @@ TEST(DatasetWriter, CamerasWithDelaysAreRenderedAtTheirCaptureTimes) {
   ASSERT_EQ(seq.timestamps().size(), 2u);
   for (size_t i = 0; i < 2; ++i) {
     const double trigger = 0.1 * static_cast<double>(i);
-    for (const auto& [camera, delay] :
-         std::map<std::string, double>{{"front", 0.0}, {"left", 0.0}, {"rear", 0.030}, {"right", 0.020}}) {
+    for (const auto& [camera, delay] : std::map<std::string, double>{
+             {"front", 0.0}, {"left", 0.0}, {"rear", 0.030}, {"right", 0.020}}) {
       const std::optional<double> t = seq.captureTime(i, camera);
       ASSERT_TRUE(t) << camera;
       EXPECT_GE(*t, trigger + delay - 1e-6) << camera;

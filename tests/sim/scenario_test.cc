@@ -65,6 +65,18 @@ TEST(Scenario, DefaultSplitsKeepTestSchemesAndFontsUnseen) {
   }
 }
 
+TEST(Scenario, LegibilityOnTheImageIsTheRealisticScenariosChoice) {
+  EXPECT_FALSE(parseScenario("garages: [{name: a}]", "x.yaml").legibility_on_image);
+  EXPECT_TRUE(parseScenario("legibility_on_image: true\ngarages: [{name: a}]", "x.yaml")
+                  .legibility_on_image);
+  EXPECT_THROW(parseScenario("legibility_on_image: maybe\ngarages: [{name: a}]", "x.yaml"),
+               InputError);
+  const std::string dir = std::string(PARKLOC_SOURCE_DIR) + "/data/scenarios/";
+  EXPECT_FALSE(loadScenario(dir + "default.yaml").legibility_on_image);
+  EXPECT_TRUE(loadScenario(dir + "realistic.yaml").legibility_on_image);
+  EXPECT_TRUE(loadScenario(dir + "realistic_test.yaml").legibility_on_image);
+}
+
 TEST(Scenario, BadFilesThrowWithTheField) {
   EXPECT_THROW(parseScenario("garages: []", "x.yaml"), InputError);
   EXPECT_THROW(parseScenario("[1, 2", "x.yaml"), InputError);

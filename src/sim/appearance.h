@@ -42,7 +42,9 @@ const std::vector<std::string>& appearanceFactorNames();
 float& appearanceFactor(AppearanceOptions& options, const std::string& name);
 float appearanceFactor(const AppearanceOptions& options, const std::string& name);
 
-// A named look: "clean" (every factor 0) or "realistic" (every factor 1); throws InputError
+// A named look: "clean" (every factor 0) or "realistic" (every factor on: the floor and the
+// camera at full size, half the numbers stencilled, a fifth outlined, half boxed, a quarter
+// faded, the codec at half size); throws InputError
 // naming `where` for any other name.
 AppearanceOptions appearancePreset(const std::string& name, const std::string& where);
 

@@ -3,8 +3,26 @@
 #include <cmath>
 #include <map>
 #include <opencv2/imgproc.hpp>
+#include <vector>
+
+#include "geometry/text_polygon.h"
 
 namespace parkloc::sim {
+namespace {
+
+// Whether a text's polygon (pixels) and the image [0, width - 1] x [0, height - 1] share area.
+bool overlapsImage(const geometry::TextPolygon& polygon, int width, int height) {
+  std::vector<cv::Point2f> quad, clipped;
+  for (const Eigen::Vector2d& p : polygon)
+    quad.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
+  const float w = static_cast<float>(width - 1), h = static_cast<float>(height - 1);
+  const std::vector<cv::Point2f> image{{0.0f, 0.0f}, {w, 0.0f}, {w, h}, {0.0f, h}};
+  std::vector<cv::Point2f> hull;
+  cv::convexHull(quad, hull);
+  return cv::intersectConvexConvex(hull, image, clipped) > 1.0f;
+}
+
+}  // namespace
 
 BirdsEyeStitcher::BirdsEyeStitcher(const geometry::Rig& rig, const BirdsEyeOptions& options)
     : options_(options), rig_(rig) {
@@ -106,7 +124,20 @@ io::ImageLabels birdsEyeLabels(const Garage& garage, int level, const BirdsEyeSt
       inside = inside && inst.polygon[k].x() >= 0.0 && inst.polygon[k].y() >= 0.0 &&
                inst.polygon[k].x() <= out.width - 1.0 && inst.polygon[k].y() <= out.height - 1.0;
     }
-    if (!inside) continue;
+    if (!inside) {
+      // Cut by the image's border, a number shows some of its characters: no reader reads it
+      // whole, and a detector's box on the part that shows is neither rewarded nor counted
+      // wrong (don't care, as ICDAR marks a cut word).
+      if (overlapsImage(inst.polygon, out.width, out.height)) {
+        inst.text = lm.text;
+        inst.cls = lm.cls;
+        inst.landmark_id = lm.id;
+        inst.legible = false;
+        inst.truncated = true;
+        out.instances.push_back(inst);
+      }
+      continue;
+    }
     const Eigen::Vector2d centre =
         0.25 * (inst.polygon[0] + inst.polygon[1] + inst.polygon[2] + inst.polygon[3]);
     const int camera = stitcher.cameraAt(centre);

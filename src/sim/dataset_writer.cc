@@ -412,9 +412,7 @@ DatasetStats writeDataset(const Scenario& scenario_in, const DatasetOptions& opt
       }
       if (birdseye) {
         const std::string path = (dir / "birdseye" / "images" / (frame_stem + ".jpg")).string();
-        if (!cv::imwrite(path, birdseye->stitch(images),
-                         {cv::IMWRITE_JPEG_QUALITY, scenario.jpeg_quality}))
-          throw IoError(fmt::format("simulate: cannot write {}", path));
+        writeJpeg(path, birdseye->stitch(images), scenario.jpeg_quality);
         io::ImageLabels avm_labels;
         if (stretch != Stretch::kRamp)
           avm_labels = birdsEyeLabels(*garage, level, *birdseye, state.pose, frame_labels);

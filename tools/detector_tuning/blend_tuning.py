@@ -16,24 +16,15 @@ import numpy as np
 import onnx
 from onnx import numpy_helper
 
-from apply_tuning import COLUMNS, METADATA, fail, read_tuning
+from apply_tuning import COLUMNS, METADATA, fail, read_tuning, replaced
 
 
 def blended(tuning, name, base, value, columns, weight):
-    """base + weight * (value - base) over the tuned entries (all, or the listed columns)."""
-    if columns is None:
-        if base.shape != value.shape:
-            fail(tuning, f"tensor {name} has shape {value.shape}, the model's has {base.shape}")
-        own = base
-    else:
-        if base.ndim == 0 or np.any(columns < 0) or np.any(columns >= base.shape[-1]):
-            fail(tuning, f"{name}{COLUMNS} does not index the model's last axis {base.shape}")
-        own = base[..., columns]
-        if own.shape != value.shape:
-            fail(tuning, f"tensor {name} has shape {value.shape}, its columns of the model "
-                         f"have {own.shape}")
-    own = own.astype(np.float32)
-    return (own + np.float32(weight) * (value.astype(np.float32) - own)).astype(np.float32)
+    """base + weight * (value - base) over the tuned entries (all, or the listed columns), checked
+    as apply_tuning checks a tuning."""
+    base = base.astype(np.float32)
+    mixed = base + np.float32(weight) * (replaced(tuning, name, base, value, columns) - base)
+    return mixed if columns is None else mixed[..., columns]
 
 
 def main(argv):

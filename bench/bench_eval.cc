@@ -5,14 +5,14 @@
 #include <cmath>
 #include <random>
 
-#include "eval/polygon_iou.h"
 #include "eval/text_matching.h"
 #include "eval/trajectory_metrics.h"
+#include "geometry/image_polygon.h"
 #include "geometry/pose.h"
 
 namespace {
 
-using parkloc::eval::Quad;
+using parkloc::geometry::Quad;
 
 Quad rotatedBox(float cx, float cy, float w, float h, float angle) {
   const float c = std::cos(angle), s = std::sin(angle);
@@ -25,7 +25,7 @@ Quad rotatedBox(float cx, float cy, float w, float h, float angle) {
 
 void BM_PolygonIoU(benchmark::State& state) {
   const Quad a = rotatedBox(100, 100, 80, 30, 0.3f), b = rotatedBox(104, 98, 78, 32, 0.35f);
-  for (auto _ : state) benchmark::DoNotOptimize(parkloc::eval::polygonIoU(a, b));
+  for (auto _ : state) benchmark::DoNotOptimize(parkloc::geometry::polygonIoU(a, b));
 }
 BENCHMARK(BM_PolygonIoU);
 

@@ -7,6 +7,11 @@
 namespace parkloc::eval {
 namespace {
 
+using geometry::clippedToImage;
+using geometry::intersectionArea;
+using geometry::polygonArea;
+using geometry::polygonIoU;
+
 // The polygons as compared: whole, or their parts inside the image.
 std::vector<std::vector<cv::Point2f>> compared(const std::vector<Quad>& quads,
                                                const MatchingOptions& options) {

@@ -5,9 +5,11 @@
 #include <optional>
 #include <vector>
 
-#include "eval/polygon_iou.h"
+#include "geometry/image_polygon.h"
 
 namespace parkloc::eval {
+
+using geometry::Quad;
 
 struct MatchingOptions {
   double min_iou = 0.5;

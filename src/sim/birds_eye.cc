@@ -5,21 +5,18 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "geometry/image_polygon.h"
 #include "geometry/text_polygon.h"
 
 namespace parkloc::sim {
 namespace {
 
-// Whether a text's polygon (pixels) and the image [0, width - 1] x [0, height - 1] share area.
-bool overlapsImage(const geometry::TextPolygon& polygon, int width, int height) {
-  std::vector<cv::Point2f> quad, clipped;
+// Whether a text's polygon (pixels) shares more than a pixel of area with the image.
+bool overlapsImage(const geometry::TextPolygon& polygon, cv::Size size) {
+  std::vector<cv::Point2f> quad;
   for (const Eigen::Vector2d& p : polygon)
     quad.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
-  const float w = static_cast<float>(width - 1), h = static_cast<float>(height - 1);
-  const std::vector<cv::Point2f> image{{0.0f, 0.0f}, {w, 0.0f}, {w, h}, {0.0f, h}};
-  std::vector<cv::Point2f> hull;
-  cv::convexHull(quad, hull);
-  return cv::intersectConvexConvex(hull, image, clipped) > 1.0f;
+  return geometry::polygonArea(geometry::clippedToImage(quad, size)) > 1.0;
 }
 
 }  // namespace
@@ -128,7 +125,7 @@ io::ImageLabels birdsEyeLabels(const Garage& garage, int level, const BirdsEyeSt
       // Cut by the image's border, a number shows some of its characters: no reader reads it
       // whole, and a detector's box on the part that shows is neither rewarded nor counted
       // wrong (don't care, as ICDAR marks a cut word).
-      if (overlapsImage(inst.polygon, out.width, out.height)) {
+      if (overlapsImage(inst.polygon, {out.width, out.height})) {
         inst.text = lm.text;
         inst.cls = lm.cls;
         inst.landmark_id = lm.id;

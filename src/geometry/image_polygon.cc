@@ -1,8 +1,8 @@
-#include "eval/polygon_iou.h"
+#include "geometry/image_polygon.h"
 
 #include <opencv2/imgproc.hpp>
 
-namespace parkloc::eval {
+namespace parkloc::geometry {
 namespace {
 
 std::vector<cv::Point2f> convexHull(const std::vector<cv::Point2f>& polygon) {
@@ -49,4 +49,4 @@ std::vector<cv::Point2f> clippedToImage(const std::vector<cv::Point2f>& polygon,
   return inside;
 }
 
-}  // namespace parkloc::eval
+}  // namespace parkloc::geometry

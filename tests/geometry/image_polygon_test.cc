@@ -1,8 +1,8 @@
-#include "eval/polygon_iou.h"
+#include "geometry/image_polygon.h"
 
 #include <gtest/gtest.h>
 
-namespace parkloc::eval {
+namespace parkloc::geometry {
 namespace {
 
 Quad box(float x0, float y0, float x1, float y1) {
@@ -58,4 +58,4 @@ TEST(ClippedToImage, KeepsThePartInsideTheImage) {
 }
 
 }  // namespace
-}  // namespace parkloc::eval
+}  // namespace parkloc::geometry

@@ -1,12 +1,13 @@
 #pragma once
-// Intersection over union of two text polygons, the overlap measure of ICDAR-2015 detection
-// evaluation. Polygons are in pixels; a quadrilateral that is not convex (a bad detection)
-// is replaced by its convex hull.
+// Areas of text polygons in an image: intersection over union (the overlap measure of
+// ICDAR-2015 detection evaluation) and the part of a polygon the image shows, for the
+// metrics and for the simulator's labels. Polygons are in pixels; a quadrilateral that is not
+// convex (a bad detection) is replaced by its convex hull.
 #include <array>
 #include <opencv2/core.hpp>
 #include <vector>
 
-namespace parkloc::eval {
+namespace parkloc::geometry {
 
 using Quad = std::array<cv::Point2f, 4>;
 
@@ -22,4 +23,4 @@ double polygonIoU(const Quad& a, const Quad& b);
 // when nothing of it does.
 std::vector<cv::Point2f> clippedToImage(const std::vector<cv::Point2f>& polygon, cv::Size size);
 
-}  // namespace parkloc::eval
+}  // namespace parkloc::geometry

@@ -74,15 +74,7 @@ std::optional<cv::Mat> innerComponents(const cv::Mat& binary) {
 // crop's edge, which takes a grey-level split for itself and leaves the paint with the floor,
 // stays with the floor here.
 cv::Mat colourDistance(const cv::Mat& crop, double sigma) {
-  // OpenCV builds its 8-bit Lab tables at the first BGR->Lab conversion without a lock: two
-  // threads spotting at once (the critical path and a worker) both build them and one copy is
-  // lost. A function-local static is initialised once, the other threads waiting for it.
-  static const bool lab_tables_built = [] {
-    cv::Mat lab;
-    cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar::all(128)), lab, cv::COLOR_BGR2Lab);
-    return true;
-  }();
-  (void)lab_tables_built;
+  buildColourTables();
   cv::Mat lab;
   cv::cvtColor(crop, lab, cv::COLOR_BGR2Lab);
   std::vector<cv::Mat> channels;
@@ -124,6 +116,18 @@ std::optional<InkMask> inkMask(const cv::Mat& image, const Quad& detected,
 }
 
 }  // namespace
+
+void buildColourTables() {
+  // OpenCV builds the tables without a lock: two threads converting at once would both build
+  // them and one copy is lost. A function-local static is initialised once, the other threads
+  // waiting for it.
+  static const bool built = [] {
+    cv::Mat lab;
+    cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar::all(128)), lab, cv::COLOR_BGR2Lab);
+    return true;
+  }();
+  (void)built;
+}
 
 std::vector<cv::Point2f> inkOutline(const cv::Mat& image, const Quad& quad,
                                     const CornerRefinementOptions& options) {

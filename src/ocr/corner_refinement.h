@@ -38,6 +38,12 @@ struct CornerRefinementOptions {
   float min_length_share = 0.7f;
 };
 
+// Builds OpenCV's 8-bit Lab tables, which the colour fallback of the ink split needs. OpenCV
+// builds them at the process's first BGR->Lab conversion, which takes about 150 ms: a spotter
+// calls this when it is made, so that the cost does not fall on the first frame set that fits
+// yellow paint. Once per process; callers on other threads wait for the first.
+void buildColourTables();
+
 // Ink outline points (raw image pixels) of the text inside `quad`; empty when no clear ink
 // is found.
 std::vector<cv::Point2f> inkOutline(const cv::Mat& image, const Quad& quad,

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "common/error.h"
+#include "ocr/corner_refinement.h"
 #include "ocr/ppocr/dedup.h"
 #include "ocr/ppocr/map_prior_rules.h"
 #include "ocr/ppocr/pp_ocr_models.h"
@@ -25,7 +26,9 @@ PpOcrSpotter::PpOcrSpotter(const PpOcrOptions& options)
     : options_(options),
       models_(std::make_unique<PpOcrModels>(options.models, options.onnx, options.reading.alphabet,
                                             options.detection.band)),
-      floor_views_(options.detection.floor_view, options.detection.placed_reach) {}
+      floor_views_(options.detection.floor_view, options.detection.placed_reach) {
+  buildColourTables();
+}
 
 PpOcrSpotter::~PpOcrSpotter() = default;
 

@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <optional>
+#include <thread>
+#include <vector>
 
 #include "synthetic_text.h"
 
@@ -80,6 +83,25 @@ TEST(RefineInCrop, YellowPaintBesideADarkShadowIsFoundByItsColour) {
   ASSERT_TRUE(fit.has_value());
   EXPECT_LT(meanCornerDistance(*fit, truth), 2.5);
   EXPECT_GT(meanCornerDistance(detected, truth), 6.0);
+}
+
+TEST(RefineInCrop, ThreadsThatFitByColourAtOnceGetTheSameFit) {
+  // Each test runs in a process of its own, so these threads make the process's first Lab
+  // conversions together: OpenCV builds its tables then, and builds them once
+  // (buildColourTables).
+  const BumperScene scene = yellowTextUnderABumper();
+  const cv::Rect& r = scene.ink;
+  const Quad detected = box(r.x - 8, r.y - 8, r.x + r.width + 8, r.y + r.height + 8);
+  std::vector<std::optional<Quad>> fits(4);
+  std::vector<std::thread> threads;
+  for (auto& fit : fits) threads.emplace_back([&] { fit = refineInCrop(scene.image, detected); });
+  for (auto& t : threads) t.join();
+  const auto alone = refineInCrop(scene.image, detected);
+  ASSERT_TRUE(alone.has_value());
+  for (const auto& fit : fits) {
+    ASSERT_TRUE(fit.has_value());
+    EXPECT_LT(meanCornerDistance(*fit, *alone), 1e-4);
+  }
 }
 
 TEST(RefineInCrop, ColourlessBlankFloorGivesNoFit) {

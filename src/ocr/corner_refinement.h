@@ -40,8 +40,8 @@ struct CornerRefinementOptions {
 
 // Builds OpenCV's 8-bit Lab tables, which the colour fallback of the ink split needs. OpenCV
 // builds them at the process's first BGR->Lab conversion, which takes about 150 ms: a spotter
-// calls this when it is made, so that the cost does not fall on the first frame set that fits
-// yellow paint. Once per process; callers on other threads wait for the first.
+// calls this when it is made, so that the cost does not fall on the first frame set whose ink
+// split falls back on colour. Once per process; callers on other threads wait for the first.
 void buildColourTables();
 
 // Ink outline points (raw image pixels) of the text inside `quad`; empty when no clear ink

@@ -86,8 +86,8 @@ TEST(RefineInCrop, YellowPaintBesideADarkShadowIsFoundByItsColour) {
 }
 
 TEST(RefineInCrop, ThreadsThatFitByColourAtOnceGetTheSameFit) {
-  // Each test runs in a process of its own, so these threads make the process's first Lab
-  // conversions together: OpenCV builds its tables then, and builds them once
+  // Under ctest each test runs in a process of its own, so these threads make the process's
+  // first Lab conversions together: OpenCV builds its tables then, and builds them once
   // (buildColourTables).
   const BumperScene scene = yellowTextUnderABumper();
   const cv::Rect& r = scene.ink;

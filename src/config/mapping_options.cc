@@ -46,11 +46,17 @@ void describe(OptionVisitor& v, mapping::EstimationOptions& o) {
   v.value("odometry_min_sigma_m", o.odometry_min_sigma_m,
           "odometry position noise between frame sets, floor (m, 1 sigma)");
   v.value("odometry_sigma_per_m", o.odometry_sigma_per_m,
-          "... and its share of the distance (wheel scale, slip)");
+          "... and its share of the distance (slip)");
   v.value("odometry_min_yaw_sigma_rad", o.odometry_min_yaw_sigma_rad,
           "odometry yaw noise between frame sets, floor (rad)");
   v.value("odometry_yaw_sigma_per_m", o.odometry_yaw_sigma_per_m,
-          "... and per metre driven (rad/m; gyro noise and bias)");
+          "... and per metre driven (rad/m; gyro noise)");
+  v.value("estimate_odometry_calibration", o.estimate_odometry_calibration,
+          "estimate each drive's odometry distance scale and gyro yaw-rate bias with the poses");
+  v.value("distance_scale_prior_sigma", o.distance_scale_prior_sigma,
+          "prior on the distance scale (share of the distance, 1 sigma)");
+  v.value("yaw_rate_bias_prior_sigma", o.yaw_rate_bias_prior_sigma,
+          "prior on the yaw-rate bias (rad/s, 1 sigma)");
   v.value("max_iterations", o.max_iterations, "Ceres iterations at most");
   v.value("threads", o.threads, "Ceres threads");
 }

@@ -1,6 +1,7 @@
 #include "mapping/build_report.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace parkloc::mapping {
 
@@ -32,7 +33,9 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
                       {"survey_reading_s", d.reading.survey_seconds},
                       {"reading_ms_per_frame_set", per_frame},
                       {"odometry_distance_m", d.odometry_distance_m},
-                      {"estimated_distance_m", d.estimated_distance_m}});
+                      {"estimated_distance_m", d.estimated_distance_m},
+                      {"odometry_distance_scale", d.distance_scale},
+                      {"odometry_yaw_rate_bias_deg_s", d.yaw_rate_bias * 180.0 / M_PI}});
   }
   std::vector<const LandmarkEstimate*> order;
   for (const LandmarkEstimate& l : build.landmarks) order.push_back(&l);

@@ -9,6 +9,7 @@
 #include "common/error.h"
 #include "geometry/planar_fit.h"
 #include "mapping/landmark_seed.h"
+#include "mapping/odometry_factor.h"
 #include "mapping/sighting_cast.h"
 
 namespace parkloc::mapping {
@@ -125,6 +126,8 @@ MapBuild estimateMap(const std::vector<const geometry::Rig*>& rigs,
       for (const geometry::Pose2& p : poses[d].map_from_vehicle)
         states[d].poses.push_back({p.x, p.y, p.yaw});
       states[d].motion = poses[d].motion;
+      for (size_t i = 0; i + 1 < poses[d].timestamps.size(); ++i)
+        states[d].seconds.push_back(poses[d].timestamps[i + 1] - poses[d].timestamps[i]);
     }
     std::vector<LandmarkEstimate> seeds = build.landmarks;
     MapProblem problem(states, build.landmarks, sightings, build.consensus.tracks,
@@ -163,6 +166,8 @@ MapBuild estimateMap(const std::vector<const geometry::Rig*>& rigs,
     for (const auto& p : states[d].poses) drive.estimated.emplace_back(p[0], p[1], p[2]);
     drive.odometry_distance_m = pathLength(drive.dead_reckoned);
     drive.estimated_distance_m = pathLength(drive.estimated);
+    drive.distance_scale = states[d].odometry_calibration[kDistanceScale];
+    drive.yaw_rate_bias = states[d].odometry_calibration[kYawRateBias];
     for (const Sighting& s : sightings) drive.sightings += s.drive == d ? 1 : 0;
     // The cameras measure distance through the landmarks; the odometry through the wheels.
     if (drive.odometry_distance_m > 1.0) {

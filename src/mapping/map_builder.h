@@ -45,6 +45,10 @@ struct DriveOutcome {
   std::vector<geometry::Pose2> estimated;
   double odometry_distance_m = 0.0;
   double estimated_distance_m = 0.0;
+  // The odometry's calibration the estimation found (odometry_factor.h): true distance over
+  // measured, less 1, and the gyro's yaw-rate bias (rad/s).
+  double distance_scale = 0.0;
+  double yaw_rate_bias = 0.0;
 };
 
 struct MapBuild {

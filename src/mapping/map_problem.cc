@@ -33,10 +33,21 @@ MapProblem::MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEsti
 
   for (DriveState& drive : drives_) {
     for (auto& pose : drive.poses) problem_->AddParameterBlock(pose.data(), 3);
-    for (size_t i = 0; i + 1 < drive.poses.size() && i < drive.motion.size(); ++i) {
+    double* calibration = drive.odometry_calibration.data();
+    problem_->AddParameterBlock(calibration, 2);
+    if (options.estimate_odometry_calibration)
       problem_->AddResidualBlock(
-          OdometryFactor::create(drive.motion[i], odometrySigmas(drive.motion[i], options)),
-          nullptr, drive.poses[i].data(), drive.poses[i + 1].data());
+          OdometryCalibrationPrior::create(options.distance_scale_prior_sigma,
+                                           options.yaw_rate_bias_prior_sigma),
+          nullptr, calibration);
+    else
+      problem_->SetParameterBlockConstant(calibration);
+    for (size_t i = 0; i + 1 < drive.poses.size() && i < drive.motion.size(); ++i) {
+      const double seconds = i < drive.seconds.size() ? drive.seconds[i] : 0.0;
+      problem_->AddResidualBlock(OdometryFactor::create(drive.motion[i], seconds,
+                                                        odometrySigmas(drive.motion[i], options)),
+                                 nullptr, drive.poses[i].data(), drive.poses[i + 1].data(),
+                                 calibration);
       ++odometry_factors_;
     }
   }

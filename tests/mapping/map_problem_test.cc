@@ -107,6 +107,27 @@ TEST(MapProblem, SaysWhenTheOdometryDisagreesWithTheCameras) {
   EXPECT_LT(worstError(build, survey).position, 0.03);
 }
 
+TEST(MapProblem, LearnsTheOdometrysDistanceScaleAndGyroBias) {
+  const auto survey = makeSurvey();
+  // Wheels 3 % long, the gyro biased by 0.5 degrees a second (0.05 degrees per 0.1 s step).
+  const double bias_per_step = 0.05 * M_PI / 180.0;
+  const SurveyPoses odometry = biasedOdometry(survey.poses, 1.03, bias_per_step);
+  const MapBuild build = estimateMap({&survey.rig}, {odometry}, survey.sightings, {});
+  ASSERT_EQ(build.drives.size(), 1u);
+  // True distance over measured, less 1: 1 / 1.03 - 1.
+  EXPECT_NEAR(build.drives[0].distance_scale, 1.0 / 1.03 - 1.0, 1e-3);
+  EXPECT_NEAR(build.drives[0].yaw_rate_bias, bias_per_step / 0.1, 1e-3);
+  EXPECT_LT(worstError(build, survey).position, 1e-4);
+
+  // Taken as measured, the same odometry bends and stretches the drive, and the landmarks with
+  // it, as far as the corner noise lets the odometry's sigmas give.
+  MapBuildOptions as_measured;
+  as_measured.estimation.estimate_odometry_calibration = false;
+  const MapBuild measured = estimateMap({&survey.rig}, {odometry}, survey.sightings, as_measured);
+  EXPECT_EQ(measured.drives[0].distance_scale, 0.0);
+  EXPECT_GT(worstError(measured, survey).position, 10.0 * worstError(build, survey).position);
+}
+
 TEST(MapProblem, RobustLossKeepsAMisplacedCornerFromMovingTheLandmark) {
   auto survey = makeSurvey();
   std::mt19937 rng(3);

@@ -56,11 +56,13 @@ inline SyntheticSurvey makeSurvey(int frames = 40, double step_m = 0.25) {
   return s;
 }
 
-// The odometry between the true poses, with a yaw-rate bias and a wheel-scale error.
+// The odometry between the true poses, with a yaw-rate bias and a wheel-scale error; frame
+// sets 0.1 s apart.
 inline SurveyPoses biasedOdometry(const std::vector<geometry::Pose2>& poses, double scale,
                                   double yaw_per_step) {
   SurveyPoses out;
   out.map_from_vehicle.push_back(poses.front());
+  for (size_t i = 0; i < poses.size(); ++i) out.timestamps.push_back(0.1 * static_cast<double>(i));
   for (size_t i = 1; i < poses.size(); ++i) {
     const geometry::Pose2 m = poses[i - 1].inverse() * poses[i];
     out.motion.emplace_back(scale * m.x, scale * m.y, m.yaw + yaw_per_step);

@@ -53,6 +53,8 @@ void describe(OptionVisitor& v, mapping::EstimationOptions& o) {
           "... and per metre driven (rad/m; gyro noise)");
   v.value("estimate_odometry_calibration", o.estimate_odometry_calibration,
           "estimate each drive's odometry distance scale and gyro yaw-rate bias with the poses");
+  v.value("calibration_min_distance_m", o.calibration_min_distance_m,
+          "... over drives at least this long (m); shorter ones take the odometry as measured");
   v.value("distance_scale_prior_sigma", o.distance_scale_prior_sigma,
           "prior on the distance scale (share of the distance, 1 sigma)");
   v.value("yaw_rate_bias_prior_sigma", o.yaw_rate_bias_prior_sigma,

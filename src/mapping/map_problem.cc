@@ -35,7 +35,9 @@ MapProblem::MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEsti
     for (auto& pose : drive.poses) problem_->AddParameterBlock(pose.data(), 3);
     double* calibration = drive.odometry_calibration.data();
     problem_->AddParameterBlock(calibration, 2);
-    if (options.estimate_odometry_calibration)
+    double distance = 0.0;
+    for (const geometry::Pose2& m : drive.motion) distance += m.translation().norm();
+    if (options.estimate_odometry_calibration && distance >= options.calibration_min_distance_m)
       problem_->AddResidualBlock(
           OdometryCalibrationPrior::create(options.distance_scale_prior_sigma,
                                            options.yaw_rate_bias_prior_sigma),

@@ -112,7 +112,10 @@ TEST(MapProblem, LearnsTheOdometrysDistanceScaleAndGyroBias) {
   // Wheels 3 % long, the gyro biased by 0.5 degrees a second (0.05 degrees per 0.1 s step).
   const double bias_per_step = 0.05 * M_PI / 180.0;
   const SurveyPoses odometry = biasedOdometry(survey.poses, 1.03, bias_per_step);
-  const MapBuild build = estimateMap({&survey.rig}, {odometry}, survey.sightings, {});
+  // The made-up drive is 10 m long: the calibration is asked for over any distance.
+  MapBuildOptions calibrated;
+  calibrated.estimation.calibration_min_distance_m = 0.0;
+  const MapBuild build = estimateMap({&survey.rig}, {odometry}, survey.sightings, calibrated);
   ASSERT_EQ(build.drives.size(), 1u);
   // True distance over measured, less 1: 1 / 1.03 - 1.
   EXPECT_NEAR(build.drives[0].distance_scale, 1.0 / 1.03 - 1.0, 1e-3);
@@ -126,6 +129,10 @@ TEST(MapProblem, LearnsTheOdometrysDistanceScaleAndGyroBias) {
   const MapBuild measured = estimateMap({&survey.rig}, {odometry}, survey.sightings, as_measured);
   EXPECT_EQ(measured.drives[0].distance_scale, 0.0);
   EXPECT_GT(worstError(measured, survey).position, 10.0 * worstError(build, survey).position);
+  // By default a drive this short keeps its odometry as measured.
+  const MapBuild short_drive = estimateMap({&survey.rig}, {odometry}, survey.sightings, {});
+  EXPECT_EQ(short_drive.drives[0].distance_scale, 0.0);
+  EXPECT_EQ(short_drive.drives[0].yaw_rate_bias, 0.0);
 }
 
 TEST(MapProblem, RobustLossKeepsAMisplacedCornerFromMovingTheLandmark) {

@@ -47,7 +47,7 @@ struct EstimationOptions {
   // by 0.5 % per drive, a wrong wheel radius by more) and a gyro bias of a fraction of a degree
   // per second (0.1 deg/s in the simulator). False: the odometry is taken as measured.
   // Only over a drive at least calibration_min_distance_m long: on the train and validation
-  // drives of 12-19 s (20-55 m) the calibration made the maps no better (position RMS 1.58
+  // drives of 12-19 s (18-28 m) the calibration made the maps no better (position RMS 1.58
   // against 1.44 cm on average; 3.35 against 2.02 cm on one), since over a short drive the
   // constant errors add up to little and their estimate takes up the corners' biases, while
   // on the 60 s surveys (127-139 m) it took the RMS from 4.10 and 2.50 to 1.56 and 2.31 cm.

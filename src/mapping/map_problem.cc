@@ -1,10 +1,13 @@
 #include "mapping/map_problem.h"
 
 #include <ceres/ceres.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
+#include "common/error.h"
 #include "mapping/corner_factor.h"
 #include "mapping/odometry_factor.h"
 
@@ -19,12 +22,32 @@ OdometrySigmas odometrySigmas(const geometry::Pose2& motion, const EstimationOpt
           std::max(o.odometry_min_yaw_sigma_rad, o.odometry_yaw_sigma_per_m * distance)};
 }
 
+// Every sigma and scale divides a residual: zero or less would fill the solution with NaN.
+void requirePositive(const EstimationOptions& o) {
+  const std::pair<const char*, double> values[] = {
+      {"pixel_sigma", o.pixel_sigma},
+      {"robust_scale", o.robust_scale},
+      {"odometry_min_sigma_m", o.odometry_min_sigma_m},
+      {"odometry_min_yaw_sigma_rad", o.odometry_min_yaw_sigma_rad},
+      {"distance_scale_prior_sigma", o.distance_scale_prior_sigma},
+      {"yaw_rate_bias_prior_sigma", o.yaw_rate_bias_prior_sigma}};
+  for (const auto& [name, value] : values)
+    if (!(value > 0.0))
+      throw InputError(
+          fmt::format("map_build.estimation.{} must be positive, not {}", name, value));
+  if (!(o.odometry_sigma_per_m >= 0.0) || !(o.odometry_yaw_sigma_per_m >= 0.0))
+    throw InputError(
+        "map_build.estimation.odometry_sigma_per_m and odometry_yaw_sigma_per_m "
+        "must not be negative");
+}
+
 }  // namespace
 
 MapProblem::MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEstimate>& landmarks,
                        const std::vector<Sighting>& sightings, const std::vector<TextTrack>& tracks,
                        const EstimationOptions& options)
     : drives_(drives), landmarks_(landmarks), options_(options) {
+  requirePositive(options);
   ceres::Problem::Options problem_options;
   // Factors are owned by the problem; the loss is shared by all corners and owned here.
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;

@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "common/error.h"
 #include "mapping/corner_factor.h"
 #include "mapping/map_builder.h"
 #include "synthetic_survey.h"
@@ -133,6 +134,24 @@ TEST(MapProblem, LearnsTheOdometrysDistanceScaleAndGyroBias) {
   const MapBuild short_drive = estimateMap({&survey.rig}, {odometry}, survey.sightings, {});
   EXPECT_EQ(short_drive.drives[0].distance_scale, 0.0);
   EXPECT_EQ(short_drive.drives[0].yaw_rate_bias, 0.0);
+}
+
+TEST(MapProblem, RefusesASigmaThatIsNotPositive) {
+  const auto survey = makeSurvey();
+  const SurveyPoses odometry = biasedOdometry(survey.poses, 1.0, 0.0);
+  MapBuildOptions options;
+  options.estimation.yaw_rate_bias_prior_sigma = 0.0;
+  try {
+    estimateMap({&survey.rig}, {odometry}, survey.sightings, options);
+    FAIL() << "a zero prior sigma was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("yaw_rate_bias_prior_sigma must be positive"),
+              std::string::npos)
+        << e.what();
+  }
+  options = {};
+  options.estimation.pixel_sigma = -1.0;
+  EXPECT_THROW(estimateMap({&survey.rig}, {odometry}, survey.sightings, options), InputError);
 }
 
 TEST(MapProblem, RobustLossKeepsAMisplacedCornerFromMovingTheLandmark) {

@@ -94,6 +94,7 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
             {"out_of_sequence", build.consensus.out_of_sequence},
             {"loops_closed", build.consensus.loops},
             {"duplicates", build.consensus.duplicates},
+            {"outweighed_duplicates", build.consensus.outweighed_duplicates},
             {"inconsistent", build.inconsistent}}},
           {"estimation",
            {{"converged", e.converged},

@@ -127,32 +127,41 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
     candidates.push_back(std::move(track));
   }
 
-  // One reading at several places: a loop when they are near, else a duplicate.
+  // One reading at several places: a loop when they are near. Far apart, it is a number
+  // painted twice or a misread that won another number's place; the place that has it in at
+  // least min_margin times the frame sets of every other keeps it (as a place keeps its
+  // reading against a runner-up), else no place does.
   std::map<std::string, std::vector<size_t>> by_text;
   for (size_t t = 0; t < candidates.size(); ++t) by_text[candidates[t].text].push_back(t);
   for (auto& [text, indices] : by_text) {
-    TextTrack merged = candidates[indices.front()];
-    bool duplicate = false;
-    for (size_t k = 1; k < indices.size(); ++k) {
-      const TextTrack& other = candidates[indices[k]];
-      if ((other.place - merged.place).norm() > options.loop_radius_m) {
-        duplicate = true;
-        break;
+    std::vector<TextTrack> places;  // the candidates merged into places loop_radius_m apart
+    for (size_t index : indices) {
+      const TextTrack& other = candidates[index];
+      auto near = std::find_if(places.begin(), places.end(), [&](const TextTrack& p) {
+        return (other.place - p.place).norm() <= options.loop_radius_m;
+      });
+      if (near == places.end()) {
+        places.push_back(other);
+        continue;
       }
-      const double n = static_cast<double>(merged.sightings.size());
+      const double n = static_cast<double>(near->sightings.size());
       const double m = static_cast<double>(other.sightings.size());
-      merged.place = (n * merged.place + m * other.place) / (n + m);
-      merged.sightings.insert(merged.sightings.end(), other.sightings.begin(),
-                              other.sightings.end());
-      merged.misreads += other.misreads;
+      near->place = (n * near->place + m * other.place) / (n + m);
+      near->sightings.insert(near->sightings.end(), other.sightings.begin(), other.sightings.end());
+      near->misreads += other.misreads;
       ++out.loops;
     }
-    if (duplicate) {
-      out.duplicates.push_back(text);
-      continue;
+    for (TextTrack& p : places) p.frame_sets = distinctFrameSets(sightings, p.sightings);
+    std::sort(places.begin(), places.end(),
+              [](const TextTrack& a, const TextTrack& b) { return a.frame_sets > b.frame_sets; });
+    if (places.size() > 1) {
+      if (places[0].frame_sets < options.min_margin * places[1].frame_sets) {
+        out.duplicates.push_back(text);
+        continue;
+      }
+      out.outweighed_duplicates.push_back(text);
     }
-    merged.frame_sets = distinctFrameSets(sightings, merged.sightings);
-    out.tracks.push_back(std::move(merged));
+    out.tracks.push_back(std::move(places.front()));
   }
 
   // Two landmarks of one format side by side whose numbers are not consecutive: one of them

@@ -6,7 +6,8 @@
 // A place makes a landmark only when its reading was seen in enough frame sets and agrees
 // with most of what was read there. Two places with one reading: near each other they are the
 // same text seen again after a loop (merged; this closes the loop in the estimation), far
-// apart they are a number painted twice or a misread that won a place, and neither is kept.
+// apart they are a number painted twice or a misread that won another number's place: the one
+// where it was read in min_margin times the frame sets of every other keeps it, else none.
 #include <Eigen/Core>
 #include <string>
 #include <utility>
@@ -79,8 +80,11 @@ struct Consensus {
   // Places whose reading was too rarely confirmed (min_confirmed_frame_sets).
   size_t unconfirmed_places = 0;
   size_t loops = 0;        // places merged with another of the same reading
-  // Readings that won two places far apart: left out of the map.
+  // Readings that won two places far apart, none seen in min_margin times the frame sets of
+  // the other: left out of the map.
   std::vector<std::string> duplicates;
+  // ... one of them so seen: kept there, the others taken for misreads of other numbers.
+  std::vector<std::string> outweighed_duplicates;
   std::vector<UndecidedPlace> undecided;
   // Landmarks left out for breaking the numbering's sequence beside a better-seen one.
   std::vector<std::string> out_of_sequence;

@@ -114,6 +114,11 @@ MapBuild estimateMap(const std::vector<const geometry::Rig*>& rigs,
   for (const std::string& text : build.consensus.duplicates)
     build.problems.push_back(fmt::format(
         "'{}' was read at two places far apart (painted twice, or a misread): left out", text));
+  for (const std::string& text : build.consensus.outweighed_duplicates)
+    build.problems.push_back(fmt::format(
+        "'{}' was read at two places far apart: kept where it was read in at least {} times "
+        "the frame sets, the other place taken for a misread",
+        text, options.consensus.min_margin));
   for (const TextTrack& track : build.consensus.tracks)
     build.landmarks.push_back(seedLandmark(track, cast));
 

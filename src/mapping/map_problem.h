@@ -36,7 +36,7 @@ struct EstimationOptions {
   // Odometry between consecutive frame sets (1 sigma): a floor for standstill plus a share of
   // the distance (slip), and the same for the yaw (gyro noise), once the drive's constant scale
   // and yaw-rate bias are estimated (below). On 60 s survey tours of a train and a validation
-  // garage, 0.002 rad/m rather than 0.005 took the position RMS from 1.65 and 4.23 cm to 1.56
+  // garage, 0.002 rad/m rather than 0.005 took the position RMS from 2.04 and 4.23 cm to 1.87
   // and 2.31 cm; tighter position sigmas changed less.
   double odometry_min_sigma_m = 0.002;
   double odometry_sigma_per_m = 0.02;
@@ -50,7 +50,7 @@ struct EstimationOptions {
   // drives of 12-19 s (18-28 m) the calibration made the maps no better (position RMS 1.58
   // against 1.44 cm on average; 3.35 against 2.02 cm on one), since over a short drive the
   // constant errors add up to little and their estimate takes up the corners' biases, while
-  // on the 60 s surveys (127-139 m) it took the RMS from 4.10 and 2.50 to 1.56 and 2.31 cm.
+  // on the 60 s surveys (127-139 m) it took the RMS from 3.02 and 2.50 to 1.87 and 2.31 cm.
   bool estimate_odometry_calibration = true;
   double calibration_min_distance_m = 100.0;
   double distance_scale_prior_sigma = 0.05;

@@ -86,6 +86,27 @@ TEST(Consensus, TheSameTextNearByClosesALoopFarAwayIsADuplicate) {
   EXPECT_EQ(c.duplicates[0], "102");
 }
 
+TEST(Consensus, AFarPlaceReadInFarFewerFrameSetsIsAMisreadOfAnotherNumber) {
+  Readings r;
+  // 045 in full sight for 8 frame sets; a worn 046 far down the level read as 045 in 3.
+  for (size_t f = 0; f < 8; ++f) r.add("045", {20.0, 0.0}, f);
+  for (size_t f = 40; f < 43; ++f) r.add("045", {-18.0, -10.0}, f);
+  const Consensus c = formConsensus(r.sightings, r.cast, {});
+  const TextTrack* kept = find(c, "045");
+  ASSERT_NE(kept, nullptr);
+  EXPECT_EQ(kept->frame_sets, 8);
+  EXPECT_NEAR(kept->place.x(), 20.0, 1e-9);
+  EXPECT_TRUE(c.duplicates.empty());
+  ASSERT_EQ(c.outweighed_duplicates.size(), 1u);
+  EXPECT_EQ(c.outweighed_duplicates[0], "045");
+  // Seen in 5 frame sets there instead (under twice as few as 8), neither place keeps it.
+  for (size_t f = 43; f < 45; ++f) r.add("045", {-18.0, -10.0}, f);
+  const Consensus close = formConsensus(r.sightings, r.cast, {});
+  EXPECT_EQ(find(close, "045"), nullptr);
+  ASSERT_EQ(close.duplicates.size(), 1u);
+  EXPECT_TRUE(close.outweighed_duplicates.empty());
+}
+
 TEST(Consensus, UnconfirmedReadingsVoteButMakeNoLandmarkAlone) {
   Readings r;
   // A car's plate, read freely off the numbering the drive was read against.

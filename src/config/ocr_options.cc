@@ -63,6 +63,10 @@ void describe(OptionVisitor& v, ocr::DetectionOptions& o) {
   v.value("floor_read_expand_x", o.floor_read_expand_x,
           "floor boxes are the text's own box: read from a crop grown by this along the text");
   v.value("floor_read_expand_y", o.floor_read_expand_y, "... and by this across it");
+  v.value("floor_unfitted_unclip_ratio", o.floor_unfitted_unclip_ratio,
+          "a floor box with no ink fit is the kernel grown by this, not floor_db's (0: that)");
+  v.value("birdseye_unfitted_unclip_ratio", o.birdseye_unfitted_unclip_ratio,
+          "... and on a bird's-eye image (parkloc ocr --birdseye)");
   v.value("confident_box_score", o.confident_box_score,
           "floor boxes this sure are text found even when nothing reads them");
   v.section("band", "the raw image's horizon band, as rays from the optical axis", [&] {
@@ -143,6 +147,8 @@ void describe(OptionVisitor& v, ocr::CornerRefinementOptions& o) {
           "where grey levels find no text, ink is what lies far from the floor's colour");
   v.value("min_length_share", o.min_length_share,
           "a fit shorter than this share of its box lost part of the text: box kept");
+  v.value("frames", o.frames, "text inside a painted frame: fit the glyphs, not the frame");
+  v.value("patches", o.patches, "text on a patch of colour: fit the glyphs, not the patch");
 }
 
 void describe(OptionVisitor& v, ocr::TrackedFitOptions& o) {

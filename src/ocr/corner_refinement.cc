@@ -47,9 +47,47 @@ std::optional<cv::Mat> splitInk(const cv::Mat& channel, std::optional<bool> ink_
   return binary;
 }
 
+// Numbers painted inside a frame or on a patch of colour: the ink's split may take the frame
+// or the patch, whose box is the backing's, not the text's. A component at least as wide as
+// it is high (a glyph is narrower) whose outline, holes filled, fills 9/10 of its minimum-area
+// rectangle (glyph outlines are not rectangles), with holes of a tenth of it or more, is such a
+// backing: a thin ring (under 0.45 of its filled area) is a frame, dropped for the glyphs
+// inside it; a solid one is a patch, whose holes are the glyphs (with their counters).
+cv::Mat glyphsInsideBackings(const cv::Mat& keep, const CornerRefinementOptions& options) {
+  if (!options.frames && !options.patches) return keep;
+  constexpr double kMinRectangleFill = 0.9, kMinHoleShare = 0.1, kRingShareMax = 0.45;
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(keep, labels, stats, centroids, 8, CV_32S);
+  cv::Mat out = keep.clone();
+  for (int i = 1; i < n; ++i) {
+    const int cw = stats.at<int>(i, cv::CC_STAT_WIDTH), ch = stats.at<int>(i, cv::CC_STAT_HEIGHT);
+    if (cw < ch) continue;
+    const cv::Mat component = labels == i;
+    std::vector<std::vector<cv::Point>> outer;
+    cv::findContours(component.clone(), outer, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+    cv::Mat filled = cv::Mat::zeros(keep.size(), CV_8U);
+    cv::drawContours(filled, outer, -1, cv::Scalar(255), cv::FILLED);
+    const double filled_area = cv::countNonZero(filled);
+    const double area = stats.at<int>(i, cv::CC_STAT_AREA);
+    std::vector<cv::Point> points;
+    for (const auto& c : outer) points.insert(points.end(), c.begin(), c.end());
+    const cv::Size2f rect = cv::minAreaRect(points).size;
+    if (filled_area < kMinRectangleFill * (rect.width + 1) * (rect.height + 1) ||
+        filled_area - area < kMinHoleShare * filled_area)
+      continue;
+    const bool ring = area < kRingShareMax * filled_area;
+    if (ring ? !options.frames : !options.patches) continue;
+    out.setTo(0, component);
+    if (!ring) out.setTo(255, filled & ~component);
+  }
+  return out;
+}
+
 // The components of `binary` that do not touch the crop's border (slot lines, neighbours, a
-// car's shadow), or nullopt when they leave too little to be a text.
-std::optional<cv::Mat> innerComponents(const cv::Mat& binary) {
+// car's shadow), backings replaced by the glyphs on them, or nullopt when they leave too little
+// to be a text.
+std::optional<cv::Mat> innerComponents(const cv::Mat& binary,
+                                       const CornerRefinementOptions& options) {
   const int h = binary.rows, w = binary.cols;
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(binary, labels, stats, centroids, 8, CV_32S);
@@ -65,6 +103,8 @@ std::optional<cv::Mat> innerComponents(const cv::Mat& binary) {
     kept_area += area;
   }
   if (kept_area < h * h / 20) return std::nullopt;
+  keep = glyphsInsideBackings(keep, options);
+  if (cv::countNonZero(keep) < h * h / 20) return std::nullopt;
   return keep;
 }
 
@@ -108,10 +148,10 @@ std::optional<InkMask> inkMask(const cv::Mat& image, const Quad& detected,
   if (sigma >= 0.3) cv::GaussianBlur(gray, gray, {0, 0}, sigma);
   // Grey levels first; where they find no text, the distance from the floor's colour.
   if (const auto binary = splitInk(gray, std::nullopt, options))
-    if (auto keep = innerComponents(*binary)) return InkMask{*keep, crop_from_image.inv()};
+    if (auto keep = innerComponents(*binary, options)) return InkMask{*keep, crop_from_image.inv()};
   if (!options.colour_fallback) return std::nullopt;
   if (const auto binary = splitInk(colourDistance(crop, sigma), true, options))
-    if (auto keep = innerComponents(*binary)) return InkMask{*keep, crop_from_image.inv()};
+    if (auto keep = innerComponents(*binary, options)) return InkMask{*keep, crop_from_image.inv()};
   return std::nullopt;
 }
 

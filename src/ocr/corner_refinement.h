@@ -36,6 +36,10 @@ struct CornerRefinementOptions {
   // lost part of the text (blurred glyphs whose ink breaks apart), not tightened the box,
   // which is then kept as it is: DB's boxes, unclipped, are about as long as the text.
   float min_length_share = 0.7f;
+  // A number painted inside a frame or on a patch of colour: the glyphs inside, not the
+  // backing's box (glyphsInsideBackings in corner_refinement.cc).
+  bool frames = true;
+  bool patches = true;
 };
 
 // Builds OpenCV's 8-bit Lab tables, which the colour fallback of the ink split needs. OpenCV

@@ -1,6 +1,7 @@
 #include "ocr/db_postprocess.h"
 
 #include <algorithm>
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 
 namespace parkloc::ocr {
@@ -29,6 +30,24 @@ cv::RotatedRect unclipRect(const cv::RotatedRect& rect, double unclip_ratio) {
   return {rect.center,
           cv::Size2f(static_cast<float>(w + 2 * distance), static_cast<float>(h + 2 * distance)),
           rect.angle};
+}
+
+Quad reunclipQuad(const Quad& grown, double from_ratio, double to_ratio) {
+  const double w = quadWidth(grown), h = quadHeight(grown);
+  if (w <= 0.0 || h <= 0.0 || from_ratio <= 0.0) return grown;
+  // unclipRect grows a w0 x h0 kernel by d = r w0 h0 / (2 (w0 + h0)) on every side; with
+  // w0 = w - 2d and h0 = h - 2d that is (4r + 8) d^2 - 2 (r + 1) (w + h) d + r w h = 0, whose
+  // smaller root leaves a kernel of positive size.
+  const double r = from_ratio;
+  const double a = 4.0 * r + 8.0, b = -2.0 * (r + 1.0) * (w + h), c = r * w * h;
+  const double discriminant = b * b - 4.0 * a * c;
+  if (discriminant < 0.0) return grown;
+  const double d = (-b - std::sqrt(discriminant)) / (2.0 * a);
+  const double w0 = w - 2.0 * d, h0 = h - 2.0 * d;
+  if (w0 <= 0.0 || h0 <= 0.0) return grown;
+  const double d_to = to_ratio * w0 * h0 / (2.0 * (w0 + h0));
+  return expandQuad(grown, static_cast<float>((w0 + 2.0 * d_to) / w),
+                    static_cast<float>((h0 + 2.0 * d_to) / h));
 }
 
 std::vector<DbBox> dbBoxesFromProbability(const cv::Mat& probability, const DbOptions& options) {

@@ -36,4 +36,10 @@ std::vector<size_t> readingPriority(const std::vector<DbBox>& boxes, float confi
 // Grows a rectangle by DB's offset distance: area * ratio / perimeter on every side.
 cv::RotatedRect unclipRect(const cv::RotatedRect& rect, double unclip_ratio);
 
+// The box that growing the same kernel by `to_ratio` would have given, from the box `grown`
+// that growing it by `from_ratio` gave (unclipRect solved back for the kernel): the margin of a
+// box already grown can be chosen again where it is used. `grown` is a rectangle in its own
+// reading frame; a degenerate one is returned as it is.
+Quad reunclipQuad(const Quad& grown, double from_ratio, double to_ratio);
+
 }  // namespace parkloc::ocr

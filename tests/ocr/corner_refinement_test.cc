@@ -104,6 +104,66 @@ TEST(RefineInCrop, ThreadsThatFitByColourAtOnceGetTheSameFit) {
   }
 }
 
+// White digits on grey concrete inside a painted frame (a white line a tenth of the text's
+// height, a quarter of it clear all round), or on a dark blue patch that reaches 20 px out.
+struct BackedScene {
+  cv::Mat image;
+  cv::Rect ink, backing;
+};
+BackedScene numberOn(bool patch) {
+  const cv::Scalar concrete(140, 140, 140), white(235, 235, 235), blue(150, 60, 30);
+  const cv::Scalar behind = patch ? blue : concrete;
+  const cv::Mat line = testing::renderTextLine("2047", 40, 0, white, behind);
+  BackedScene scene;
+  scene.image = cv::Mat(200, line.cols + 200, CV_8UC3, concrete);
+  scene.ink = cv::Rect(100, 80, line.cols, line.rows);
+  scene.backing = cv::Rect(80, 64, line.cols + 40, line.rows + 32);
+  if (patch)
+    scene.image(scene.backing).setTo(blue);
+  else
+    cv::rectangle(scene.image, scene.backing, white, 4);
+  line.copyTo(scene.image(scene.ink));
+  return scene;
+}
+
+TEST(RefineInCrop, ANumberInsideAFrameOrOnAPatchIsFittedToItsGlyphs) {
+  for (const bool patch : {false, true}) {
+    SCOPED_TRACE(patch ? "patch" : "frame");
+    const BackedScene scene = numberOn(patch);
+    const cv::Rect& b = scene.backing;
+    // The detector boxed the backing, a few pixels loose.
+    const Quad detected = box(b.x - 6, b.y - 6, b.x + b.width + 6, b.y + b.height + 6);
+    const cv::Rect& r = scene.ink;
+    const Quad glyphs = box(r.x - 0.5f, r.y - 0.5f, r.x + r.width - 0.5f, r.y + r.height - 0.5f);
+    const Quad backing = box(b.x - 0.5f, b.y - 0.5f, b.x + b.width - 0.5f, b.y + b.height - 0.5f);
+
+    const auto fit = refineInCrop(scene.image, detected);
+    ASSERT_TRUE(fit.has_value());
+    EXPECT_LT(meanCornerDistance(*fit, glyphs), 3.0);
+
+    // Without the rule the backing's own box is the fit.
+    CornerRefinementOptions backing_kept;
+    backing_kept.frames = backing_kept.patches = false;
+    const auto kept = refineInCrop(scene.image, detected, backing_kept);
+    ASSERT_TRUE(kept.has_value());
+    EXPECT_LT(meanCornerDistance(*kept, backing), 3.0);
+  }
+}
+
+TEST(RefineInCrop, PlainGlyphsAreNotTakenForABacking) {
+  // Bold digits whose counters are holes: no backing, the fit is the glyphs' box either way.
+  const cv::Scalar concrete(140, 140, 140), white(235, 235, 235);
+  const cv::Mat line = testing::renderTextLine("808", 40, 60, white, concrete);
+  const Quad detected = box(50, 50, line.cols - 50, line.rows - 50);
+  CornerRefinementOptions no_rule;
+  no_rule.frames = no_rule.patches = false;
+  const auto with_rule = refineInCrop(line, detected),
+             without = refineInCrop(line, detected, no_rule);
+  ASSERT_TRUE(with_rule.has_value());
+  ASSERT_TRUE(without.has_value());
+  EXPECT_LT(meanCornerDistance(*with_rule, *without), 0.5);
+}
+
 TEST(RefineInCrop, ColourlessBlankFloorGivesNoFit) {
   cv::Mat floor(120, 400, CV_8UC3, cv::Scalar(150, 150, 150));
   floor(cv::Rect(0, 0, 400, 40)).setTo(cv::Scalar(25, 25, 25));

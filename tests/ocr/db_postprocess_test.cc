@@ -66,6 +66,23 @@ TEST(Unclip, GrowsEverySideByAreaTimesRatioOverPerimeter) {
   EXPECT_FLOAT_EQ(g.angle, 12.f);
 }
 
+TEST(Unclip, ABoxGrownAtOneRatioRegrowsAtAnotherFromTheSameKernel) {
+  const cv::RotatedRect kernel({200, 120}, {70, 12}, 0);
+  const Quad wide = quadFromRotatedRect(unclipRect(kernel, 2.0));
+  const Quad tight = quadFromRotatedRect(unclipRect(kernel, 1.3));
+  const Quad regrown = reunclipQuad(wide, 2.0, 1.3);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(regrown[i].x, tight[i].x, 1e-2);
+    EXPECT_NEAR(regrown[i].y, tight[i].y, 1e-2);
+  }
+  EXPECT_LT(quadWidth(regrown), quadWidth(wide) - 1.f);
+  // The same ratio gives the box back; a degenerate box is left as it is.
+  const Quad same = reunclipQuad(wide, 2.0, 2.0);
+  EXPECT_NEAR(quadWidth(same), quadWidth(wide), 1e-2);
+  const Quad flat = {cv::Point2f(0, 0), {10, 0}, {10, 0}, {0, 0}};
+  EXPECT_EQ(reunclipQuad(flat, 2.0, 1.3), flat);
+}
+
 TEST(ReadingPriority, ConfidentBoxesFirstThenTheLargest) {
   auto box = [](float w, float h, float score) {
     DbBox b;

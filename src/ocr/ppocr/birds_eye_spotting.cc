@@ -32,7 +32,8 @@ std::vector<TextInstance> PpOcrSpotter::spotBirdsEye(const cv::Mat& image,
     cv::Mat input = view;
     if (turned) cv::rotate(view, input, cv::ROTATE_90_CLOCKWISE);
     std::vector<TextInstance> found =
-        detectAndRead(input, floor_request, nullptr, DetectorRole::kFloorView, nullptr);
+        detectAndRead(input, floor_request, nullptr, DetectorRole::kFloorView, nullptr, 1.f,
+                      {options_.detection.birdseye_unfitted_unclip_ratio, nullptr});
     for (TextInstance& inst : found)
       for (auto& p : inst.polygon) {
         // A quarter turn clockwise maps view (x, y) to (rows - 1 - y, x).

@@ -1,16 +1,21 @@
 #include "ocr/ppocr/corners.h"
 
-#include <optional>
-
 namespace parkloc::ocr {
 
-Quad refinedCorners(const cv::Mat& image, const Quad& quad, const CornerOptions& options,
-                    const geometry::RigCamera* camera) {
-  if (!options.refine) return quad;
+std::optional<Quad> inkFittedCorners(const cv::Mat& image, const Quad& quad,
+                                     const CornerOptions& options,
+                                     const geometry::RigCamera* camera) {
+  if (!options.refine) return std::nullopt;
   std::optional<Quad> refined;
   if (camera != nullptr) refined = refineOnGround(image, quad, *camera, options.fit);
   if (!refined) refined = refineInCrop(image, quad, options.fit);
-  return refined && plausibleRefinement(quad, *refined, options.fit) ? *refined : quad;
+  if (refined && plausibleRefinement(quad, *refined, options.fit)) return refined;
+  return std::nullopt;
+}
+
+Quad refinedCorners(const cv::Mat& image, const Quad& quad, const CornerOptions& options,
+                    const geometry::RigCamera* camera) {
+  return inkFittedCorners(image, quad, options, camera).value_or(quad);
 }
 
 }  // namespace parkloc::ocr

@@ -3,6 +3,7 @@
 // because the localization measures with them and DB's boxes are loose rectangles in the raw
 // fisheye image.
 #include <opencv2/core.hpp>
+#include <optional>
 
 #include "geometry/rig.h"
 #include "ocr/corner_refinement.h"
@@ -16,7 +17,13 @@ struct CornerOptions {
 };
 
 // The corners fitted to the ink (on the ground plane when `camera` is given, else in the
-// crop) when the fit is plausible (plausibleRefinement), else `quad` itself.
+// crop) when the fit is plausible (plausibleRefinement); empty when it is not, or when
+// options.refine is off.
+std::optional<Quad> inkFittedCorners(const cv::Mat& image, const Quad& quad,
+                                     const CornerOptions& options,
+                                     const geometry::RigCamera* camera);
+
+// inkFittedCorners, else `quad` itself.
 Quad refinedCorners(const cv::Mat& image, const Quad& quad, const CornerOptions& options,
                     const geometry::RigCamera* camera);
 

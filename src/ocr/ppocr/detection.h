@@ -56,6 +56,14 @@ struct DetectionOptions {
   // split among 1.05 x 1.15 to 1.2 x 1.7 (docs/OCR.md).
   float floor_read_expand_x = 1.1f;
   float floor_read_expand_y = 1.3f;
+  // A floor box whose corners find no plausible ink fit (docs/OCR.md, "8. Corner refinement")
+  // is reported as the detector's kernel grown by this ratio instead of floor_db's, which grows
+  // it for the reading crop and the ink search: on the realistic look the kernel spreads over
+  // stains and backings and floor_db's growth boxes a number at about twice its area. 0:
+  // floor_db's box. On the fisheye floor view the localization measures with the box, and its
+  // rules were chosen with floor_db's; on a bird's-eye image the box is what is reported.
+  double floor_unfitted_unclip_ratio = 0.0;
+  double birdseye_unfitted_unclip_ratio = 1.3;
   // Floor-view boxes scoring at least this (PaddleOCR's own box threshold) are text by the
   // detector's standard: under a read budget (SpotRequest::max_reads) they are read first, and
   // they are reported even when no reading is confident, as unread text (`text` empty): a

@@ -47,24 +47,34 @@ std::vector<TextInstance> PpOcrSpotter::spot(const cv::Mat& image, const SpotReq
 
 std::vector<std::optional<TextInstance>> PpOcrSpotter::readInstances(
     const cv::Mat& image, const std::vector<ReadJob>& jobs, const geometry::RigCamera* camera,
-    const CtcRecognizer* fallback) {
+    const CtcRecognizer* fallback, std::vector<bool>* fitted) {
   const std::vector<JobReading> readings =
       readJobs(image, jobs, options_.reading, *models_, fallback);
   std::vector<std::optional<TextInstance>> out(jobs.size());
+  if (fitted != nullptr) fitted->assign(jobs.size(), false);
   for (size_t i = 0; i < jobs.size(); ++i) {
     out[i] = instanceOf(jobs[i], readings[i], options_.reading);
     if (!out[i]) continue;
     applyOneEndRule(*out[i], jobs[i], options_.map_prior);
-    out[i]->polygon = refinedCorners(image, out[i]->polygon, options_.corners, camera);
+    const std::optional<Quad> fit =
+        inkFittedCorners(image, out[i]->polygon, options_.corners, camera);
+    if (fit) out[i]->polygon = *fit;
+    if (fitted != nullptr) (*fitted)[i] = fit.has_value();
   }
   return out;
+}
+
+Quad PpOcrSpotter::unfittedFloorBox(const TextInstance& inst, double unclip_ratio) const {
+  if (unclip_ratio <= 0.0 || inst.partial) return inst.polygon;
+  return reunclipQuad(inst.polygon, options_.detection.floor_db.unclip_ratio, unclip_ratio);
 }
 
 std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
                                                       const SpotRequest& request,
                                                       const geometry::RigCamera* camera,
                                                       DetectorRole role, const FloorWindow* floor,
-                                                      float role_scale) {
+                                                      float role_scale,
+                                                      const UnfittedFloorBoxes& unfitted) {
   const Detections found = detect(image, role, *models_, options_.detection,
                                   request.detection_scale * role_scale, request.max_reads);
   ReadJobSet jobs;
@@ -73,9 +83,25 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
   const CtcRecognizer* fallback = models_->fallback_recognizer && request.second_opinions
                                       ? &*models_->fallback_recognizer
                                       : nullptr;
+  std::vector<bool> fitted;
+  std::vector<std::optional<TextInstance>> read =
+      readInstances(image, jobs.jobs, camera, fallback, &fitted);
   std::vector<TextInstance> out;
-  for (auto& inst : readInstances(image, jobs.jobs, camera, fallback))
-    if (inst) out.push_back(std::move(*inst));
+  if (unfitted.boxes != nullptr) unfitted.boxes->clear();
+  for (size_t i = 0; i < read.size(); ++i) {
+    if (!read[i]) continue;
+    TextInstance& inst = *read[i];
+    // A floor box its ink did not fit: at the margin reported unfitted, now or (`boxes`)
+    // after the caller's own fit.
+    if (role == DetectorRole::kFloorView) {
+      const Quad box = fitted[i] ? inst.polygon : unfittedFloorBox(inst, unfitted.unclip_ratio);
+      if (unfitted.boxes != nullptr)
+        unfitted.boxes->push_back(box);
+      else
+        inst.polygon = box;
+    }
+    out.push_back(std::move(inst));
+  }
   return out;
 }
 
@@ -92,22 +118,31 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
   // dropped.
   auto addFloorText = [&](const cv::Mat& rendered, const FloorWindow& window, bool skip_seen) {
     const size_t found_before = out.size();
-    for (TextInstance& inst :
-         detectAndRead(rendered, request, nullptr, DetectorRole::kFloorView, &window)) {
+    std::vector<Quad> unfitted_in_view;
+    std::vector<TextInstance> found =
+        detectAndRead(rendered, request, nullptr, DetectorRole::kFloorView, &window, 1.f,
+                      {detection.floor_unfitted_unclip_ratio, &unfitted_in_view});
+    for (size_t k = 0; k < found.size(); ++k) {
+      TextInstance& inst = found[k];
       // A window reports the placed texts it was opened for, not what else it read.
       if (window.only_placed_texts && !inst.lexicon_match) continue;
       const std::optional<cv::Point2f> shift = window.shiftAt(quadCentre(inst.polygon));
       if (!shift) continue;
       const ClassWeights weights = floorClassWeights(
           *window.view, quadCentre(inst.polygon) + *shift, request, options_.map_prior);
-      Quad in_view = inst.polygon;
+      Quad in_view = inst.polygon, unfitted = unfitted_in_view[k];
       for (auto& p : in_view) p += *shift;
+      for (auto& p : unfitted) p += *shift;
       const std::optional<Quad> in_raw = window.view->rawFromView(in_view);
       if (!in_raw) continue;
       inst.polygon = *in_raw;
       if (skip_seen && seenBefore(inst, out, found_before)) continue;
-      // Final corner fit at the raw image's resolution, on the ground plane.
-      inst.polygon = refinedCorners(image, inst.polygon, options_.corners, request.camera);
+      // Final corner fit at the raw image's resolution, on the ground plane; without one, the
+      // view's fit or the box at the margin reported unfitted.
+      const std::optional<Quad> fit =
+          inkFittedCorners(image, inst.polygon, options_.corners, request.camera);
+      const std::optional<Quad> unfitted_in_raw = window.view->rawFromView(unfitted);
+      inst.polygon = fit ? *fit : unfitted_in_raw.value_or(inst.polygon);
       if (placed_rules && options_.map_prior.placed_size &&
           !holdToPlacedSize(inst, *window.view, request, *options_.map_prior.placed_size,
                             detection.confident_box_score))

@@ -40,6 +40,15 @@ struct PpOcrOptions {
   RegionOptions regions;       // map-guided regions
 };
 
+// What becomes of a floor-view box whose ink did not fit: grown from its kernel by
+// `unclip_ratio` (0: DetectionOptions::floor_db's box), either reported so, or, with `boxes`
+// given, kept at floor_db's box for the caller's own fit while `boxes` gets, per instance, the
+// box to report when that fit fails too.
+struct UnfittedFloorBoxes {
+  double unclip_ratio = 0.0;
+  std::vector<Quad>* boxes = nullptr;
+};
+
 class PpOcrSpotter : public TextSpotter {
  public:
   // Loads every model; throws InputError naming a missing or unreadable file.
@@ -70,12 +79,17 @@ class PpOcrSpotter : public TextSpotter {
   std::vector<TextInstance> detectAndRead(const cv::Mat& image, const SpotRequest& request,
                                           const geometry::RigCamera* camera, DetectorRole role,
                                           const FloorWindow* floor = nullptr,
-                                          float role_scale = 1.f);
-  // Reading, the one-end rule and refinement: an instance per reported job, in job order.
+                                          float role_scale = 1.f,
+                                          const UnfittedFloorBoxes& unfitted = {});
+  // Reading, the one-end rule and refinement: an instance per reported job, in job order;
+  // `fitted`, when given, says per job whether its corners were fitted to the ink.
   std::vector<std::optional<TextInstance>> readInstances(const cv::Mat& image,
                                                          const std::vector<ReadJob>& jobs,
                                                          const geometry::RigCamera* camera,
-                                                         const CtcRecognizer* fallback);
+                                                         const CtcRecognizer* fallback,
+                                                         std::vector<bool>* fitted = nullptr);
+  // A floor box with no ink fit, its kernel grown by `unclip_ratio` instead of floor_db's.
+  Quad unfittedFloorBox(const TextInstance& inst, double unclip_ratio) const;
 
   PpOcrOptions options_;
   std::unique_ptr<PpOcrModels> models_;

@@ -124,6 +124,8 @@ void describe(OptionVisitor& v, localize::AssociationOptions& o) {
           "the gate never assumes less position uncertainty than this (map survey error)");
   v.value("gate_centre_sigma_px", o.gate_centre_sigma_px,
           "pixel noise of an observed text centre on top of the pose uncertainty");
+  v.value("box_only_centre", o.box_only_centre,
+          "a text whose corners found no ink fit (the detector's box) measures its centre only");
 }
 
 void describe(OptionVisitor& v, localize::PaperModuleOptions& o) {

@@ -95,7 +95,7 @@ AssociatedObservations Associator::associate(const std::vector<CameraResult>& ca
           o.pixels = toEigen(instance.polygon);
           o.map_corners = floors_.cornersAboveFloor(landmark);
           o.tag = tag;
-          o.use_corners = use_corners;
+          o.use_corners = use_corners && !(options_.box_only_centre && instance.box_only);
           o.accuracy = landmark.accuracy;
           // A text the map has at several places (a level sign, a pillar's faces) is
           // associated by the predicted pose, so it cannot tell that the pose is wrong.

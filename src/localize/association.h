@@ -39,6 +39,11 @@ struct AssociationOptions {
   // Pixel noise of an observed text centre on top of the pose uncertainty (OCR polygon
   // jitter, map survey error).
   double gate_centre_sigma_px = 6.0;
+  // A text whose corners are the detector's box, not fitted to its ink (ocr::TextInstance::
+  // box_only), measures its centre only: the box's size follows the detector's kernel, which
+  // spreads with the floor's look, and a box too small or too large for the map's text reads
+  // as a text nearer or farther away.
+  bool box_only_centre = false;
 };
 
 // The observations association hands to the measurement.

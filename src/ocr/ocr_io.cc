@@ -42,6 +42,7 @@ nlohmann::json toJson(const TextInstance& inst) {
           {"second_opinion", inst.second_opinion},
           {"partial", inst.partial},
           {"sized_by_map", inst.sized_by_map},
+          {"box_only", inst.box_only},
           {"class", map::toString(inst.cls)},
           {"class_id", static_cast<int>(inst.cls)},
           {"detection_score", inst.detection_score},

@@ -34,6 +34,9 @@ struct TextInstance {
   // The box was tightened to the size the map gives the text it was read as (under a
   // predicted pose: MapPriorOptions::placed_size): its corners are not all the ink's.
   bool sized_by_map = false;
+  // No ink fit was plausible (docs/OCR.md, "8. Corner refinement"): the corners are the
+  // detector's box, which holds the text but whose size follows the detector's kernel.
+  bool box_only = false;
   map::TextClass cls = map::TextClass::kOther;
   float detection_score = 0.f;
   float recognition_score = 0.f;  // calibrated probability of `text`

@@ -605,6 +605,29 @@ TEST(PpOcrSpotterModels, TheFloorDetectorsBoxIsReadWithAMarginAndReportedAsDetec
   EXPECT_LT(maxCornerError(with_margin.found[0].polygon, without.found[0].polygon), 0.01);
 }
 
+// A floor box whose ink fit is off or fails says so (box_only), and is reported grown from the
+// detector's kernel by floor_unfitted_unclip_ratio when that is set: smaller than DB's box.
+TEST(PpOcrSpotterModels, AFloorBoxWithoutAnInkFitSaysSoAndTakesTheUnfittedMargin) {
+  auto models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  models.floor_detection = floorDetectorIn(PARKLOC_MODEL_DIR);
+  PpOcrOptions options;
+  const auto fitted = spotOnTheLeftFloor(models, options);
+  ASSERT_EQ(fitted.found.size(), 1u);
+  EXPECT_FALSE(fitted.found[0].box_only);
+
+  options.corners.refine = false;
+  const auto wide = spotOnTheLeftFloor(models, options);
+  options.detection.floor_unfitted_unclip_ratio = 1.3;
+  const auto tight = spotOnTheLeftFloor(models, options);
+  ASSERT_EQ(wide.found.size(), 1u);
+  ASSERT_EQ(tight.found.size(), 1u);
+  EXPECT_TRUE(wide.found[0].box_only);
+  EXPECT_TRUE(tight.found[0].box_only);
+  EXPECT_EQ(tight.found[0].text, "B2-117");
+  EXPECT_LT(quadWidth(tight.found[0].polygon), 0.97f * quadWidth(wide.found[0].polygon));
+  EXPECT_LT(quadHeight(tight.found[0].polygon), 0.97f * quadHeight(wide.found[0].polygon));
+}
+
 // No reading is sure enough here (min_text_confidence above 1): the floor detector's box,
 // clean and confident, is still reported, as unread text; a box under confident_box_score
 // is not.

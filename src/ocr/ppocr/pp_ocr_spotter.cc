@@ -59,6 +59,7 @@ std::vector<std::optional<TextInstance>> PpOcrSpotter::readInstances(
     const std::optional<Quad> fit =
         inkFittedCorners(image, out[i]->polygon, options_.corners, camera);
     if (fit) out[i]->polygon = *fit;
+    out[i]->box_only = !fit;
     if (fitted != nullptr) (*fitted)[i] = fit.has_value();
   }
   return out;
@@ -143,6 +144,7 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
           inkFittedCorners(image, inst.polygon, options_.corners, request.camera);
       const std::optional<Quad> unfitted_in_raw = window.view->rawFromView(unfitted);
       inst.polygon = fit ? *fit : unfitted_in_raw.value_or(inst.polygon);
+      if (fit) inst.box_only = false;
       if (placed_rules && options_.map_prior.placed_size &&
           !holdToPlacedSize(inst, *window.view, request, *options_.map_prior.placed_size,
                             detection.confident_box_score))

@@ -64,7 +64,7 @@ cv::Mat glyphsInsideBackings(const cv::Mat& keep, const CornerRefinementOptions&
     if (cw < ch) continue;
     const cv::Mat component = labels == i;
     std::vector<std::vector<cv::Point>> outer;
-    cv::findContours(component.clone(), outer, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+    cv::findContours(component, outer, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
     cv::Mat filled = cv::Mat::zeros(keep.size(), CV_8U);
     cv::drawContours(filled, outer, -1, cv::Scalar(255), cv::FILLED);
     const double filled_area = cv::countNonZero(filled);

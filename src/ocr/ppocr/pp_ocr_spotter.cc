@@ -47,11 +47,10 @@ std::vector<TextInstance> PpOcrSpotter::spot(const cv::Mat& image, const SpotReq
 
 std::vector<std::optional<TextInstance>> PpOcrSpotter::readInstances(
     const cv::Mat& image, const std::vector<ReadJob>& jobs, const geometry::RigCamera* camera,
-    const CtcRecognizer* fallback, std::vector<bool>* fitted) {
+    const CtcRecognizer* fallback) {
   const std::vector<JobReading> readings =
       readJobs(image, jobs, options_.reading, *models_, fallback);
   std::vector<std::optional<TextInstance>> out(jobs.size());
-  if (fitted != nullptr) fitted->assign(jobs.size(), false);
   for (size_t i = 0; i < jobs.size(); ++i) {
     out[i] = instanceOf(jobs[i], readings[i], options_.reading);
     if (!out[i]) continue;
@@ -60,7 +59,6 @@ std::vector<std::optional<TextInstance>> PpOcrSpotter::readInstances(
         inkFittedCorners(image, out[i]->polygon, options_.corners, camera);
     if (fit) out[i]->polygon = *fit;
     out[i]->box_only = !fit;
-    if (fitted != nullptr) (*fitted)[i] = fit.has_value();
   }
   return out;
 }
@@ -84,18 +82,15 @@ std::vector<TextInstance> PpOcrSpotter::detectAndRead(const cv::Mat& image,
   const CtcRecognizer* fallback = models_->fallback_recognizer && request.second_opinions
                                       ? &*models_->fallback_recognizer
                                       : nullptr;
-  std::vector<bool> fitted;
-  std::vector<std::optional<TextInstance>> read =
-      readInstances(image, jobs.jobs, camera, fallback, &fitted);
   std::vector<TextInstance> out;
   if (unfitted.boxes != nullptr) unfitted.boxes->clear();
-  for (size_t i = 0; i < read.size(); ++i) {
-    if (!read[i]) continue;
-    TextInstance& inst = *read[i];
+  for (auto& read : readInstances(image, jobs.jobs, camera, fallback)) {
+    if (!read) continue;
+    TextInstance& inst = *read;
     // A floor box its ink did not fit: at the margin reported unfitted, now or (`boxes`)
     // after the caller's own fit.
     if (role == DetectorRole::kFloorView) {
-      const Quad box = fitted[i] ? inst.polygon : unfittedFloorBox(inst, unfitted.unclip_ratio);
+      const Quad box = inst.box_only ? unfittedFloorBox(inst, unfitted.unclip_ratio) : inst.polygon;
       if (unfitted.boxes != nullptr)
         unfitted.boxes->push_back(box);
       else
@@ -140,11 +135,13 @@ std::vector<TextInstance> PpOcrSpotter::spotFullFrame(const cv::Mat& image,
       if (skip_seen && seenBefore(inst, out, found_before)) continue;
       // Final corner fit at the raw image's resolution, on the ground plane; without one, the
       // view's fit or the box at the margin reported unfitted.
-      const std::optional<Quad> fit =
-          inkFittedCorners(image, inst.polygon, options_.corners, request.camera);
-      const std::optional<Quad> unfitted_in_raw = window.view->rawFromView(unfitted);
-      inst.polygon = fit ? *fit : unfitted_in_raw.value_or(inst.polygon);
-      if (fit) inst.box_only = false;
+      if (const std::optional<Quad> fit =
+              inkFittedCorners(image, inst.polygon, options_.corners, request.camera)) {
+        inst.polygon = *fit;
+        inst.box_only = false;
+      } else if (unfitted != in_view) {
+        inst.polygon = window.view->rawFromView(unfitted).value_or(inst.polygon);
+      }
       if (placed_rules && options_.map_prior.placed_size &&
           !holdToPlacedSize(inst, *window.view, request, *options_.map_prior.placed_size,
                             detection.confident_box_score))

@@ -81,13 +81,12 @@ class PpOcrSpotter : public TextSpotter {
                                           const FloorWindow* floor = nullptr,
                                           float role_scale = 1.f,
                                           const UnfittedFloorBoxes& unfitted = {});
-  // Reading, the one-end rule and refinement: an instance per reported job, in job order;
-  // `fitted`, when given, says per job whether its corners were fitted to the ink.
+  // Reading, the one-end rule and refinement: an instance per reported job, in job order
+  // (TextInstance::box_only where no ink fit was plausible).
   std::vector<std::optional<TextInstance>> readInstances(const cv::Mat& image,
                                                          const std::vector<ReadJob>& jobs,
                                                          const geometry::RigCamera* camera,
-                                                         const CtcRecognizer* fallback,
-                                                         std::vector<bool>* fitted = nullptr);
+                                                         const CtcRecognizer* fallback);
   // A floor box with no ink fit, its kernel grown by `unclip_ratio` instead of floor_db's.
   Quad unfittedFloorBox(const TextInstance& inst, double unclip_ratio) const;
 

@@ -41,6 +41,11 @@ void describe(OptionVisitor& v, mapping::ConsensusOptions& o) {
 
 void describe(OptionVisitor& v, mapping::EstimationOptions& o) {
   v.value("pixel_sigma", o.pixel_sigma, "corner noise of the spotter, pixels (1 sigma)");
+  v.value("estimate_corner_margin", o.estimate_corner_margin,
+          "estimate each drive's corner margins: what the ink fits and the detector's boxes "
+          "add around the glyphs (pixels)");
+  v.value("margin_prior_sigma_px", o.margin_prior_sigma_px,
+          "... under a prior of this sigma (pixels)");
   v.value("robust_scale", o.robust_scale,
           "Cauchy loss scale in sigmas: a corner off by much more is mostly ignored");
   v.value("odometry_min_sigma_m", o.odometry_min_sigma_m,

@@ -35,7 +35,9 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
                       {"odometry_distance_m", d.odometry_distance_m},
                       {"estimated_distance_m", d.estimated_distance_m},
                       {"odometry_distance_scale", d.distance_scale},
-                      {"odometry_yaw_rate_bias_deg_s", d.yaw_rate_bias * 180.0 / M_PI}});
+                      {"odometry_yaw_rate_bias_deg_s", d.yaw_rate_bias * 180.0 / M_PI},
+                      {"fitted_corner_margin_px", d.fitted_margin_px},
+                      {"unfitted_corner_margin_px", d.unfitted_margin_px}});
   }
   std::vector<const LandmarkEstimate*> order;
   for (const LandmarkEstimate& l : build.landmarks) order.push_back(&l);

@@ -173,6 +173,8 @@ MapBuild estimateMap(const std::vector<const geometry::Rig*>& rigs,
     drive.estimated_distance_m = pathLength(drive.estimated);
     drive.distance_scale = states[d].odometry_calibration[kDistanceScale];
     drive.yaw_rate_bias = states[d].odometry_calibration[kYawRateBias];
+    drive.fitted_margin_px = states[d].corner_margin_px[0];
+    drive.unfitted_margin_px = states[d].corner_margin_px[1];
     for (const Sighting& s : sightings) drive.sightings += s.drive == d ? 1 : 0;
     // The cameras measure distance through the landmarks; the odometry through the wheels.
     if (drive.odometry_distance_m > 1.0) {

@@ -49,6 +49,9 @@ struct DriveOutcome {
   // measured, less 1, and the gyro's yaw-rate bias (rad/s).
   double distance_scale = 0.0;
   double yaw_rate_bias = 0.0;
+  // The corner margins it found (pixels; corner_factor.h): ink fits, boxes without a fit.
+  double fitted_margin_px = 0.0;
+  double unfitted_margin_px = 0.0;
 };
 
 struct MapBuild {

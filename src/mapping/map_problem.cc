@@ -27,6 +27,7 @@ void requirePositive(const EstimationOptions& o) {
   const std::pair<const char*, double> values[] = {
       {"pixel_sigma", o.pixel_sigma},
       {"robust_scale", o.robust_scale},
+      {"margin_prior_sigma_px", o.margin_prior_sigma_px},
       {"odometry_min_sigma_m", o.odometry_min_sigma_m},
       {"odometry_min_yaw_sigma_rad", o.odometry_min_yaw_sigma_rad},
       {"distance_scale_prior_sigma", o.distance_scale_prior_sigma},
@@ -67,6 +68,14 @@ MapProblem::MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEsti
           nullptr, calibration);
     else
       problem_->SetParameterBlockConstant(calibration);
+    for (double& margin : drive.corner_margin_px) {
+      problem_->AddParameterBlock(&margin, 1);
+      if (options.estimate_corner_margin)
+        problem_->AddResidualBlock(CornerMarginPrior::create(options.margin_prior_sigma_px),
+                                   nullptr, &margin);
+      else
+        problem_->SetParameterBlockConstant(&margin);
+    }
     for (size_t i = 0; i + 1 < drive.poses.size() && i < drive.motion.size(); ++i) {
       const double seconds = i < drive.seconds.size() ? drive.seconds[i] : 0.0;
       problem_->AddResidualBlock(OdometryFactor::create(drive.motion[i], seconds,
@@ -89,10 +98,11 @@ MapProblem::MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEsti
       const Sighting& s = sightings[i];
       DriveState& drive = drives_[s.drive];
       const geometry::RigCamera& camera = drive.rig->cameras[static_cast<size_t>(s.camera)];
+      double* margin = &drive.corner_margin_px[s.box_only ? 1 : 0];
       for (int k = 0; k < 4; ++k) {
-        auto* factor = new CornerFactor(camera, k, s.pixels[k], options.pixel_sigma);
-        const ceres::ResidualBlockId id =
-            problem_->AddResidualBlock(factor, loss_.get(), drive.poses[s.frame].data(), landmark);
+        auto* factor = new CornerFactor(camera, k, s.pixels, options.pixel_sigma);
+        const ceres::ResidualBlockId id = problem_->AddResidualBlock(
+            factor, loss_.get(), drive.poses[s.frame].data(), landmark, margin);
         corners_.push_back({t, id});
       }
     }

@@ -30,6 +30,11 @@ namespace parkloc::mapping {
 struct EstimationOptions {
   // Corner noise of the spotter (1 sigma, pixels).
   double pixel_sigma = 1.0;
+  // Estimate each drive's corner margins (corner_factor.h): what the ink fits, and apart the
+  // detector's boxes without a fit, add around the glyphs, in pixels, under a prior of
+  // margin_prior_sigma_px. False: the corners are taken as the glyphs' own.
+  bool estimate_corner_margin = true;
+  double margin_prior_sigma_px = 2.0;
   // Cauchy loss scale on a corner's whitened error (in sigmas): a corner off by much more
   // is mostly ignored.
   double robust_scale = 3.0;
@@ -67,6 +72,9 @@ struct DriveState {
   std::vector<double> seconds;          // seconds[i]: the time from pose i to pose i+1
   // The odometry's distance scale and yaw-rate bias (rad/s; odometry_factor.h).
   std::array<double, 2> odometry_calibration{0.0, 0.0};
+  // The corner margins (pixels; corner_factor.h) of the ink-fitted sightings and of those
+  // without a fit (Sighting::box_only).
+  std::array<double, 2> corner_margin_px{0.0, 0.0};
 };
 
 struct EstimationSummary {

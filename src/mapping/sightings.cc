@@ -47,6 +47,7 @@ std::vector<Sighting> readDrive(const io::Sequence& drive, size_t drive_index,
         s.recognition_score = instance.recognition_score;
         s.second_opinion = instance.second_opinion;
         s.off_numbering = !lexicon.empty() && !instance.lexicon_match;
+        s.box_only = instance.box_only;
         sightings.push_back(std::move(s));
       }
     }

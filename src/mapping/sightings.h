@@ -29,6 +29,9 @@ struct Sighting {
   bool second_opinion = false;
   // Read against a numbering's lexicon, it matched none of its numbers: a free reading.
   bool off_numbering = false;
+  // No ink fit: the corners are the detector's box, padded around the glyphs by a margin
+  // that varies with the font and the paint (ocr::TextInstance::box_only).
+  bool box_only = false;
 };
 
 struct ReadingOptions {

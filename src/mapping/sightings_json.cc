@@ -23,7 +23,8 @@ void saveSightings(const std::vector<Sighting>& sightings, const std::string& pa
                           {"pixels", pixels},
                           {"score", s.recognition_score},
                           {"second_opinion", s.second_opinion},
-                          {"off_numbering", s.off_numbering}}
+                          {"off_numbering", s.off_numbering},
+                          {"box_only", s.box_only}}
                .dump()
         << "\n";
   }
@@ -52,6 +53,7 @@ std::vector<Sighting> loadSightings(const std::string& path) {
       s.recognition_score = j.at("score").get<double>();
       s.second_opinion = j.value("second_opinion", false);
       s.off_numbering = j.value("off_numbering", false);
+      s.box_only = j.value("box_only", false);
       sightings.push_back(std::move(s));
     } catch (const std::exception& e) {
       throw InputError(fmt::format("sightings {} line {}: {}", path, number, e.what()));

@@ -19,32 +19,39 @@ TEST(CornerFactor, JacobiansMatchCentralDifferences) {
   const geometry::Rig rig = geometry::defaultRig();
   const double pose[3] = {0.3, -0.2, 0.1};
   const double landmark[5] = {3.0, 2.8, 2.5, 0.9, 0.45};
+  const double margin[1] = {1.5};
+  // A sighting's quad, turned: the margin's directions come from it.
+  const std::array<Eigen::Vector2d, 4> quad = {
+      Eigen::Vector2d(600, 400), {660, 390}, {664, 420}, {604, 431}};
+  const int sizes[3] = {3, 5, 1};
   for (size_t c = 0; c < rig.cameras.size(); ++c) {
     for (int k = 0; k < 4; ++k) {
-      const CornerFactor factor(rig.cameras[c], k, Eigen::Vector2d(600, 400), 1.5);
-      const double* params[2] = {pose, landmark};
-      double r[2], J_pose[6], J_landmark[10];
-      double* jacobians[2] = {J_pose, J_landmark};
+      const CornerFactor factor(rig.cameras[c], k, quad, 1.5);
+      const double* params[3] = {pose, landmark, margin};
+      double r[2], J_pose[6], J_landmark[10], J_margin[2];
+      double* jacobians[3] = {J_pose, J_landmark, J_margin};
+      double* analytic[3] = {J_pose, J_landmark, J_margin};
       if (!factor.Evaluate(params, r, jacobians)) continue;  // not seen by this camera
-      for (int block = 0; block < 2; ++block) {
-        const int n = block == 0 ? 3 : 5;
+      for (int block = 0; block < 3; ++block) {
+        const int n = sizes[block];
         for (int i = 0; i < n; ++i) {
           double plus[5], minus[5];
-          const double* base = block == 0 ? pose : landmark;
-          std::copy(base, base + n, plus);
-          std::copy(base, base + n, minus);
+          std::copy(params[block], params[block] + n, plus);
+          std::copy(params[block], params[block] + n, minus);
           const double h = 1e-6;
           plus[i] += h;
           minus[i] -= h;
           double rp[2], rm[2];
-          const double* pp[2] = {block == 0 ? plus : pose, block == 1 ? plus : landmark};
-          const double* pm[2] = {block == 0 ? minus : pose, block == 1 ? minus : landmark};
+          const double* pp[3] = {pose, landmark, margin};
+          const double* pm[3] = {pose, landmark, margin};
+          pp[block] = plus;
+          pm[block] = minus;
           ASSERT_TRUE(factor.Evaluate(pp, rp, nullptr));
           ASSERT_TRUE(factor.Evaluate(pm, rm, nullptr));
           for (int row = 0; row < 2; ++row) {
             const double numeric = (rp[row] - rm[row]) / (2 * h);
-            const double analytic = (block == 0 ? J_pose : J_landmark)[row * n + i];
-            EXPECT_NEAR(analytic, numeric, 1e-4 * std::max(1.0, std::fabs(numeric)))
+            EXPECT_NEAR(analytic[block][row * n + i], numeric,
+                        1e-4 * std::max(1.0, std::fabs(numeric)))
                 << "camera " << c << " corner " << k << " block " << block << " param " << i;
           }
         }
@@ -94,6 +101,43 @@ TEST(MapProblem, RecoversKnownLandmarksToTheMillimetre) {
     EXPECT_LT(*l.position_sigma, 0.05);
   }
   EXPECT_TRUE(build.problems.empty());
+}
+
+// The corners of every sighting (of every `every`-th) moved outward from its text by `px`
+// pixels along the text's width and height, as an ink fit's threshold on blurred paint does.
+void growCorners(std::vector<Sighting>& sightings, double px, size_t every = 1) {
+  for (size_t i = 0; i < sightings.size(); i += every) {
+    Sighting& s = sightings[i];
+    const auto q = s.pixels;
+    const Eigen::Vector2d along = (q[1] - q[0] + q[2] - q[3]).normalized();
+    const Eigen::Vector2d down = (q[3] - q[0] + q[2] - q[1]).normalized();
+    s.pixels[0] += px * (-along - down);
+    s.pixels[1] += px * (along - down);
+    s.pixels[2] += px * (along + down);
+    s.pixels[3] += px * (-along + down);
+  }
+}
+
+TEST(MapProblem, LearnsTheCornerMarginInsteadOfGrowingTheTexts) {
+  auto survey = makeSurvey();
+  growCorners(survey.sightings, 1.5);
+  // Every third sighting a detector's box without an ink fit, 2.5 pixels wider still.
+  growCorners(survey.sightings, 2.5, 3);
+  for (size_t i = 0; i < survey.sightings.size(); i += 3) survey.sightings[i].box_only = true;
+  const SurveyPoses odometry = biasedOdometry(survey.poses, 1.0, 0.0);
+  const MapBuild build = estimateMap({&survey.rig}, {odometry}, survey.sightings, {});
+  ASSERT_EQ(build.landmarks.size(), survey.truth.size());
+  EXPECT_NEAR(build.drives[0].fitted_margin_px, 1.5, 0.05);
+  EXPECT_NEAR(build.drives[0].unfitted_margin_px, 4.0, 0.1);
+  EXPECT_LT(worstError(build, survey).size, 0.005);
+  // Taken as the glyphs' own corners, the same sightings make every text larger.
+  MapBuildOptions no_margin;
+  no_margin.estimation.estimate_corner_margin = false;
+  const MapBuild grown = estimateMap({&survey.rig}, {odometry}, survey.sightings, no_margin);
+  EXPECT_EQ(grown.drives[0].fitted_margin_px, 0.0);
+  EXPECT_GT(worstError(grown, survey).size, 0.02);
+  for (const LandmarkEstimate& l : grown.landmarks)
+    EXPECT_GT(l.parameters[kHeight], 0.45) << l.text;
 }
 
 TEST(MapProblem, SaysWhenTheOdometryDisagreesWithTheCameras) {

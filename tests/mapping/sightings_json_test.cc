@@ -23,6 +23,7 @@ TEST(SightingsJson, RoundTripsAndRejectsAMalformedLine) {
   Sighting second = s;
   second.second_opinion = true;
   second.off_numbering = true;
+  second.box_only = true;
   saveSightings({s, second}, path);
   const auto back = loadSightings(path);
   ASSERT_EQ(back.size(), 2u);
@@ -34,6 +35,8 @@ TEST(SightingsJson, RoundTripsAndRejectsAMalformedLine) {
   EXPECT_TRUE(back[1].second_opinion);
   EXPECT_FALSE(back[0].off_numbering);
   EXPECT_TRUE(back[1].off_numbering);
+  EXPECT_FALSE(back[0].box_only);
+  EXPECT_TRUE(back[1].box_only);
   std::ofstream(path, std::ios::app) << "{\"drive\": 0}\n";
   EXPECT_THROW(loadSightings(path), InputError);
   std::filesystem::remove(path);

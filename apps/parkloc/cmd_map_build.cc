@@ -177,6 +177,9 @@ void run(const MapBuildArgs& a) {
   if (!build.consensus.out_of_sequence.empty())
     fmt::print("  left out, out of the numbering's sequence beside a better-seen number: {}\n",
                fmt::join(build.consensus.out_of_sequence, ", "));
+  if (!build.consensus.decided_by_sequence.empty())
+    fmt::print("  contested places decided by the numbering's sequence: {}\n",
+               fmt::join(build.consensus.decided_by_sequence, ", "));
   if (!build.consensus.undecided.empty()) {
     std::vector<std::string> places;
     for (const mapping::UndecidedPlace& u : build.consensus.undecided) {

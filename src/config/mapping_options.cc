@@ -37,6 +37,10 @@ void describe(OptionVisitor& v, mapping::ConsensusOptions& o) {
   v.value("sequence_radius_m", o.sequence_radius_m,
           "of two landmarks this close whose numbers are not consecutive, the less seen is left "
           "out (0: off)");
+  v.value("sequence_decides_contests", o.sequence_decides_contests,
+          "a place of competing readings takes its most seen one when that one, and no rival, "
+          "is consecutive to a landmark within sequence_radius_m and it is no landmark "
+          "elsewhere");
 }
 
 void describe(OptionVisitor& v, mapping::EstimationOptions& o) {

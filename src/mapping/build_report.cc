@@ -94,6 +94,7 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
             {"unconfirmed_places", build.consensus.unconfirmed_places},
             {"undecided_places", undecided},
             {"out_of_sequence", build.consensus.out_of_sequence},
+            {"decided_by_sequence", build.consensus.decided_by_sequence},
             {"loops_closed", build.consensus.loops},
             {"duplicates", build.consensus.duplicates},
             {"outweighed_duplicates", build.consensus.outweighed_duplicates},

@@ -47,6 +47,24 @@ std::vector<Place> groupByPlace(const std::vector<std::optional<CastSighting>>& 
   return places;
 }
 
+// A place left out for a close runner-up or too little agreement: its most seen reading as
+// a track, and the rival readings.
+struct Contest {
+  size_t undecided;  // index into Consensus::undecided
+  TextTrack winner;
+  std::vector<std::string> rivals;
+  bool confirmed = false;
+};
+
+// Whether `text` is one number from a landmark within `radius` of `place`.
+bool inSequence(const std::string& text, const Eigen::Vector2d& place,
+                const std::vector<TextTrack>& tracks, double radius) {
+  return std::any_of(tracks.begin(), tracks.end(), [&](const TextTrack& t) {
+    const auto apart = map::numbersApart(text, t.text);
+    return apart && *apart == 1 && (t.place - place).norm() <= radius;
+  });
+}
+
 }  // namespace
 
 Consensus formConsensus(const std::vector<Sighting>& sightings,
@@ -61,6 +79,7 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
       ++out.unplaced;
   }
   std::vector<TextTrack> candidates;
+  std::vector<Contest> contests;
   for (const Place& place : groupByPlace(cast, placed, options.place_radius_m)) {
     std::map<std::string, std::vector<size_t>> by_text;
     for (size_t i : place.members) by_text[sightings[i].text].push_back(i);
@@ -101,21 +120,18 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
                 [](const auto& a, const auto& b) { return a.second > b.second; });
       out.undecided.push_back(std::move(u));
     };
-    if (best.first < options.min_frame_sets ||
-        best.first < options.min_agreement * static_cast<double>(all_frames) ||
-        best.first < options.min_margin * runner_up) {
+    const bool contested = best.first < options.min_agreement * static_cast<double>(all_frames) ||
+                           best.first < options.min_margin * runner_up;
+    if (best.first < options.min_frame_sets || contested) {
       ++out.weak_places;
       undecided(best.first < options.min_margin * runner_up ? "close runner-up" : "disagreement");
-      continue;
+      if (best.first < options.min_frame_sets) continue;
     }
     std::vector<size_t> confirmed;
     for (size_t i : *winner)
       if (!sightings[i].second_opinion && !sightings[i].off_numbering) confirmed.push_back(i);
-    if (distinctFrameSets(sightings, confirmed) < options.min_confirmed_frame_sets) {
-      ++out.unconfirmed_places;
-      undecided("unconfirmed");
-      continue;
-    }
+    const bool is_confirmed =
+        distinctFrameSets(sightings, confirmed) >= options.min_confirmed_frame_sets;
     TextTrack track;
     track.text = sightings[winner->front()].text;
     track.cls = sightings[winner->front()].cls;
@@ -124,6 +140,19 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
     track.misreads = misreads;
     for (size_t i : *winner) track.place += cast[i]->centre;
     track.place /= static_cast<double>(winner->size());
+    if (contested) {
+      Contest c{out.undecided.size() - 1, std::move(track), {}, is_confirmed};
+      for (const auto& [text, members] : by_text)
+        if (&members != winner && winning_text.find(text) == std::string::npos)
+          c.rivals.push_back(text);
+      contests.push_back(std::move(c));
+      continue;
+    }
+    if (!is_confirmed) {
+      ++out.unconfirmed_places;
+      undecided("unconfirmed");
+      continue;
+    }
     candidates.push_back(std::move(track));
   }
 
@@ -182,6 +211,33 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
         kept.push_back(t);
     }
     out.tracks = std::move(kept);
+  }
+
+  // Contested places decided by the sequence, against the landmarks decided so far.
+  if (options.sequence_decides_contests && options.sequence_radius_m > 0.0) {
+    const std::vector<TextTrack> decided = out.tracks;
+    std::vector<size_t> settled;
+    for (Contest& c : contests) {
+      const double radius = options.sequence_radius_m;
+      const bool elsewhere = std::any_of(decided.begin(), decided.end(), [&](const TextTrack& t) {
+        return t.text == c.winner.text;
+      });
+      const bool rival_in_sequence = std::any_of(
+          c.rivals.begin(), c.rivals.end(),
+          [&](const std::string& r) { return inSequence(r, c.winner.place, decided, radius); });
+      if (!c.confirmed || elsewhere || rival_in_sequence ||
+          !inSequence(c.winner.text, c.winner.place, decided, radius))
+        continue;
+      out.decided_by_sequence.push_back(c.winner.text);
+      out.tracks.push_back(std::move(c.winner));
+      settled.push_back(c.undecided);
+      --out.weak_places;
+    }
+    std::vector<UndecidedPlace> left;
+    for (size_t u = 0; u < out.undecided.size(); ++u)
+      if (std::find(settled.begin(), settled.end(), u) == settled.end())
+        left.push_back(std::move(out.undecided[u]));
+    out.undecided = std::move(left);
   }
   return out;
 }

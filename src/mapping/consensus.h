@@ -53,6 +53,11 @@ struct ConsensusOptions {
   // in 66, for 020; 101 in 3 beside 103 in 22, for 102, on the train drives, where no two true
   // landmarks within 4 m broke the sequence). 0: off.
   double sequence_radius_m = 4.0;
+  // The same sequence decides a place left out for a close runner-up or too little agreement:
+  // its most seen reading becomes a landmark when it is consecutive to a landmark within
+  // sequence_radius_m, no rival reading there is, and it is not a landmark elsewhere (a
+  // number is painted once on a level). Confirmed as any landmark must be. False: off.
+  bool sequence_decides_contests = true;
 };
 
 // One text of the map to be: the sightings that agree on its reading.
@@ -88,6 +93,8 @@ struct Consensus {
   std::vector<UndecidedPlace> undecided;
   // Landmarks left out for breaking the numbering's sequence beside a better-seen one.
   std::vector<std::string> out_of_sequence;
+  // Contested places the sequence decided (ConsensusOptions::sequence_decides_contests).
+  std::vector<std::string> decided_by_sequence;
 };
 
 // `cast[i]` is sightings[i] cast through its drive's poses (empty: unplaced); all drives in one

@@ -157,5 +157,38 @@ TEST(Consensus, OfTwoNumbersSideBySideOutOfSequenceTheLessSeenIsLeftOut) {
   EXPECT_TRUE(c.out_of_sequence.empty());
 }
 
+TEST(Consensus, TheSequenceDecidesAContestedPlace) {
+  Readings r;
+  for (size_t f = 0; f < 12; ++f) r.add("146", {0.0, 0.0}, f);
+  // 147 against 167 (a 4 blurred to a 6) and 127, a landmark of the other row: too close a
+  // contest by the counts alone.
+  for (size_t f = 0; f < 9; ++f) r.add("147", {2.5, 0.0}, f);
+  for (size_t f = 9; f < 16; ++f) r.add("167", {2.5, 0.1}, f);
+  for (size_t f = 16; f < 23; ++f) r.add("127", {2.5, -0.1}, f);
+  for (size_t f = 0; f < 10; ++f) r.add("127", {2.5, 8.0}, f);
+  // A contest whose rival is in sequence too (031 beside 032 as well as 033): left undecided.
+  for (size_t f = 0; f < 10; ++f) r.add("031", {20.0, 0.0}, f);
+  for (size_t f = 0; f < 10; ++f) r.add("034", {25.0, 0.0}, f);
+  for (size_t f = 0; f < 6; ++f) r.add("033", {22.5, 0.0}, f);
+  for (size_t f = 6; f < 11; ++f) r.add("032", {22.5, 0.1}, f);
+  Consensus c = formConsensus(r.sightings, r.cast, {});
+  const TextTrack* decided = find(c, "147");
+  ASSERT_NE(decided, nullptr);
+  EXPECT_EQ(decided->frame_sets, 9);
+  EXPECT_NEAR(decided->place.x(), 2.5, 0.1);
+  EXPECT_EQ(c.decided_by_sequence, std::vector<std::string>{"147"});
+  EXPECT_EQ(find(c, "167"), nullptr);
+  EXPECT_EQ(find(c, "033"), nullptr);
+  EXPECT_EQ(find(c, "032"), nullptr);
+  ASSERT_EQ(c.undecided.size(), 1u);
+  EXPECT_NEAR(c.undecided[0].place.x(), 22.5, 0.1);
+
+  ConsensusOptions off;
+  off.sequence_decides_contests = false;
+  c = formConsensus(r.sightings, r.cast, off);
+  EXPECT_EQ(find(c, "147"), nullptr);
+  EXPECT_EQ(c.undecided.size(), 2u);
+}
+
 }  // namespace
 }  // namespace parkloc::mapping

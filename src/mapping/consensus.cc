@@ -219,9 +219,10 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
     std::vector<size_t> settled;
     for (Contest& c : contests) {
       const double radius = options.sequence_radius_m;
-      const bool elsewhere = std::any_of(decided.begin(), decided.end(), [&](const TextTrack& t) {
-        return t.text == c.winner.text;
-      });
+      // Against the tracks as they grow: two contests won by one reading make one landmark.
+      const bool elsewhere =
+          std::any_of(out.tracks.begin(), out.tracks.end(),
+                      [&](const TextTrack& t) { return t.text == c.winner.text; });
       const bool rival_in_sequence = std::any_of(
           c.rivals.begin(), c.rivals.end(),
           [&](const std::string& r) { return inSequence(r, c.winner.place, decided, radius); });

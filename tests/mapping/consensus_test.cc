@@ -188,6 +188,14 @@ TEST(Consensus, TheSequenceDecidesAContestedPlace) {
   c = formConsensus(r.sightings, r.cast, off);
   EXPECT_EQ(find(c, "147"), nullptr);
   EXPECT_EQ(c.undecided.size(), 2u);
+
+  // The same reading winning a second contest on the other side of 146: one landmark only.
+  for (size_t f = 30; f < 38; ++f) r.add("147", {-2.5, 0.0}, f);
+  for (size_t f = 38; f < 45; ++f) r.add("167", {-2.5, 0.1}, f);
+  c = formConsensus(r.sightings, r.cast, {});
+  EXPECT_EQ(std::count_if(c.tracks.begin(), c.tracks.end(),
+                          [](const TextTrack& t) { return t.text == "147"; }),
+            1);
 }
 
 }  // namespace

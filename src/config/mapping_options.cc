@@ -18,6 +18,17 @@ void describe(OptionVisitor& v, mapping::ReadingOptions& o) {
           "numbering formats the user knows, comma-separated, '#' a digit (e.g. C###,K2-###)");
 }
 
+void describe(OptionVisitor& v, mapping::RowSequenceOptions& o) {
+  v.value("max_segment_m", o.max_segment_m,
+          "two landmarks of consecutive numbers this close make a row segment");
+  v.value("min_pitch_m", o.min_pitch_m, "the narrowest bay along a row, m");
+  v.value("max_pitch_m", o.max_pitch_m, "the widest bay along a row, a pillar beside it, m");
+  v.value("place_error_m", o.place_error_m,
+          "how far a place may lie from where its sightings put it, along the row, m");
+  v.value("lateral_m", o.lateral_m, "a place this close to a segment's line is on its row");
+  v.value("reach_m", o.reach_m, "a segment judges places no farther along its row than this");
+}
+
 void describe(OptionVisitor& v, mapping::ConsensusOptions& o) {
   v.value("place_radius_m", o.place_radius_m,
           "sightings cast within this of a place are at it (under the 2.3 m number spacing)");
@@ -41,6 +52,13 @@ void describe(OptionVisitor& v, mapping::ConsensusOptions& o) {
           "a place of competing readings takes its most seen one when that one, and no rival, "
           "is consecutive to a landmark within sequence_radius_m and it is no landmark "
           "elsewhere");
+  v.value("sequence_decides_for_any_reading", o.sequence_decides_for_any_reading,
+          "... and the reading it takes may be any of the place's readings seen in "
+          "min_frame_sets, not only the most seen one (false: the most seen only)");
+  v.value("row_sequence", o.row_sequence,
+          "the rows' numbering (consecutive landmarks' line and direction) also decides "
+          "contested places and which of two landmarks out of sequence stays");
+  v.section("row", "the numbering along a row of bays", [&] { describe(v, o.row); });
 }
 
 void describe(OptionVisitor& v, mapping::EstimationOptions& o) {
@@ -55,7 +73,9 @@ void describe(OptionVisitor& v, mapping::EstimationOptions& o) {
   v.value("odometry_min_sigma_m", o.odometry_min_sigma_m,
           "odometry position noise between frame sets, floor (m, 1 sigma)");
   v.value("odometry_sigma_per_m", o.odometry_sigma_per_m,
-          "... and its share of the distance (slip)");
+          "... and its share of the distance (slip), where the drive's scale is not estimated");
+  v.value("odometry_calibrated_sigma_per_m", o.odometry_calibrated_sigma_per_m,
+          "... and where it is (the white noise left once the scale error is estimated)");
   v.value("odometry_min_yaw_sigma_rad", o.odometry_min_yaw_sigma_rad,
           "odometry yaw noise between frame sets, floor (rad)");
   v.value("odometry_yaw_sigma_per_m", o.odometry_yaw_sigma_per_m,

@@ -153,22 +153,28 @@ std::pair<std::string, std::string> numberingEnds(const NumberingFormat& f) {
           numberOf(f, letterCombinations(f.pattern) - 1, lastValue(f))};
 }
 
-std::optional<long long> numbersApart(const std::string& a, const std::string& b) {
-  if (a.size() != b.size() || a.size() > 18) return std::nullopt;
-  long long da = 0, db = 0;
+std::optional<long long> numberStep(const std::string& from, const std::string& to) {
+  if (from.size() != to.size() || from.size() > 18) return std::nullopt;
+  long long a = 0, b = 0;
   bool digits = false;
-  for (size_t k = 0; k < a.size(); ++k) {
-    const bool ca = std::isdigit(static_cast<unsigned char>(a[k])) != 0;
-    const bool cb = std::isdigit(static_cast<unsigned char>(b[k])) != 0;
-    if (ca != cb || (!ca && a[k] != b[k])) return std::nullopt;
+  for (size_t k = 0; k < from.size(); ++k) {
+    const bool ca = std::isdigit(static_cast<unsigned char>(from[k])) != 0;
+    const bool cb = std::isdigit(static_cast<unsigned char>(to[k])) != 0;
+    if (ca != cb || (!ca && from[k] != to[k])) return std::nullopt;
     if (ca) {
-      da = 10 * da + (a[k] - '0');
-      db = 10 * db + (b[k] - '0');
+      a = 10 * a + (from[k] - '0');
+      b = 10 * b + (to[k] - '0');
       digits = true;
     }
   }
   if (!digits) return std::nullopt;
-  return da > db ? da - db : db - da;
+  return b - a;
+}
+
+std::optional<long long> numbersApart(const std::string& a, const std::string& b) {
+  const auto step = numberStep(a, b);
+  if (!step) return std::nullopt;
+  return *step < 0 ? -*step : *step;
 }
 
 }  // namespace parkloc::map

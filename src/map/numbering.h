@@ -65,4 +65,7 @@ std::vector<std::string> numberingLexicon(const std::vector<NumberingFormat>& fo
 // and "070": 51); nullopt when their formats differ or they have no digit.
 std::optional<long long> numbersApart(const std::string& a, const std::string& b);
 
+// The same, signed: how many numbers `to` comes after `from` ("B2-047" to "B2-045": -2).
+std::optional<long long> numberStep(const std::string& from, const std::string& to);
+
 }  // namespace parkloc::map

@@ -47,13 +47,12 @@ std::vector<Place> groupByPlace(const std::vector<std::optional<CastSighting>>& 
   return places;
 }
 
-// A place left out for a close runner-up or too little agreement: its most seen reading as
-// a track, and the rival readings.
+// A place left out for a close runner-up or too little agreement: each of its readings as a
+// track (the most seen first), and whether it was confirmed.
 struct Contest {
   size_t undecided;  // index into Consensus::undecided
-  TextTrack winner;
-  std::vector<std::string> rivals;
-  bool confirmed = false;
+  std::vector<TextTrack> readings;
+  std::vector<bool> confirmed;
 };
 
 // Whether `text` is one number from a landmark within `radius` of `place`.
@@ -63,6 +62,14 @@ bool inSequence(const std::string& text, const Eigen::Vector2d& place,
     const auto apart = map::numbersApart(text, t.text);
     return apart && *apart == 1 && (t.place - place).norm() <= radius;
   });
+}
+
+// The rows' numbering as the landmarks show it; no row segment when off.
+RowSequence rowsOf(const std::vector<TextTrack>& tracks, const ConsensusOptions& options) {
+  std::vector<PlacedNumber> placed;
+  if (options.row_sequence)
+    for (const TextTrack& t : tracks) placed.push_back({t.text, t.place});
+  return RowSequence(placed, options.row);
 }
 
 }  // namespace
@@ -127,24 +134,31 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
       undecided(best.first < options.min_margin * runner_up ? "close runner-up" : "disagreement");
       if (best.first < options.min_frame_sets) continue;
     }
-    std::vector<size_t> confirmed;
-    for (size_t i : *winner)
-      if (!sightings[i].second_opinion && !sightings[i].off_numbering) confirmed.push_back(i);
-    const bool is_confirmed =
-        distinctFrameSets(sightings, confirmed) >= options.min_confirmed_frame_sets;
-    TextTrack track;
-    track.text = sightings[winner->front()].text;
-    track.cls = sightings[winner->front()].cls;
-    track.sightings = *winner;
-    track.frame_sets = best.first;
-    track.misreads = misreads;
-    for (size_t i : *winner) track.place += cast[i]->centre;
-    track.place /= static_cast<double>(winner->size());
+    // A reading of the place as a track, and whether it was confirmed.
+    const auto trackOf = [&](const std::vector<size_t>& members) {
+      TextTrack track;
+      track.text = sightings[members.front()].text;
+      track.cls = sightings[members.front()].cls;
+      track.sightings = members;
+      track.frame_sets = distinctFrameSets(sightings, members);
+      track.misreads = static_cast<int>(place.members.size() - members.size());
+      for (size_t i : members) track.place += cast[i]->centre;
+      track.place /= static_cast<double>(members.size());
+      std::vector<size_t> confirmed;
+      for (size_t i : members)
+        if (!sightings[i].second_opinion && !sightings[i].off_numbering) confirmed.push_back(i);
+      return std::make_pair(
+          track, distinctFrameSets(sightings, confirmed) >= options.min_confirmed_frame_sets);
+    };
+    auto [track, is_confirmed] = trackOf(*winner);
     if (contested) {
-      Contest c{out.undecided.size() - 1, std::move(track), {}, is_confirmed};
-      for (const auto& [text, members] : by_text)
-        if (&members != winner && winning_text.find(text) == std::string::npos)
-          c.rivals.push_back(text);
+      Contest c{out.undecided.size() - 1, {std::move(track)}, {is_confirmed}};
+      for (const auto& [text, members] : by_text) {
+        if (&members == winner || winning_text.find(text) != std::string::npos) continue;
+        auto [rival, rival_confirmed] = trackOf(members);
+        c.readings.push_back(std::move(rival));
+        c.confirmed.push_back(rival_confirmed);
+      }
       contests.push_back(std::move(c));
       continue;
     }
@@ -194,16 +208,21 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
   }
 
   // Two landmarks of one format side by side whose numbers are not consecutive: one of them
-  // is a misread that won its place; the one seen in fewer frame sets is left out.
+  // is a misread that won its place. The one the rows' numbering allows stays; when the rows
+  // allow both or neither, the one seen in more frame sets.
   if (options.sequence_radius_m > 0.0) {
+    const RowSequence rows = rowsOf(out.tracks, options);
+    const auto allowed = [&](const TextTrack& t) { return rows.allows(t.text, t.place); };
     std::vector<TextTrack> kept;
     for (const TextTrack& t : out.tracks) {
       const bool outvoted =
           std::any_of(out.tracks.begin(), out.tracks.end(), [&](const TextTrack& u) {
             const auto apart = map::numbersApart(t.text, u.text);
-            return &u != &t && apart && *apart != 1 &&
-                   (u.place - t.place).norm() <= options.sequence_radius_m &&
-                   u.frame_sets > t.frame_sets;
+            if (&u == &t || !apart || *apart == 1 ||
+                (u.place - t.place).norm() > options.sequence_radius_m)
+              return false;
+            if (allowed(t) != allowed(u)) return allowed(u);
+            return u.frame_sets > t.frame_sets;
           });
       if (outvoted)
         out.out_of_sequence.push_back(t.text);
@@ -216,21 +235,31 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
   // Contested places decided by the sequence, against the landmarks decided so far.
   if (options.sequence_decides_contests && options.sequence_radius_m > 0.0) {
     const std::vector<TextTrack> decided = out.tracks;
+    const RowSequence rows = rowsOf(decided, options);
     std::vector<size_t> settled;
     for (Contest& c : contests) {
       const double radius = options.sequence_radius_m;
+      // The one reading of the place, of those seen in min_frame_sets, that is consecutive
+      // to a landmark nearby or that the rows allow, if only one is.
+      std::vector<size_t> in_sequence;
+      for (size_t r = 0; r < c.readings.size(); ++r) {
+        const TextTrack& reading = c.readings[r];
+        if (reading.frame_sets < options.min_frame_sets) continue;
+        if (inSequence(reading.text, reading.place, decided, radius) ||
+            rows.allows(reading.text, reading.place))
+          in_sequence.push_back(r);
+      }
+      if (in_sequence.size() != 1) continue;
+      const size_t r = in_sequence.front();
+      if (r != 0 && !options.sequence_decides_for_any_reading) continue;
+      TextTrack& reading = c.readings[r];
       // Against the tracks as they grow: two contests won by one reading make one landmark.
       const bool elsewhere =
           std::any_of(out.tracks.begin(), out.tracks.end(),
-                      [&](const TextTrack& t) { return t.text == c.winner.text; });
-      const bool rival_in_sequence = std::any_of(
-          c.rivals.begin(), c.rivals.end(),
-          [&](const std::string& r) { return inSequence(r, c.winner.place, decided, radius); });
-      if (!c.confirmed || elsewhere || rival_in_sequence ||
-          !inSequence(c.winner.text, c.winner.place, decided, radius))
-        continue;
-      out.decided_by_sequence.push_back(c.winner.text);
-      out.tracks.push_back(std::move(c.winner));
+                      [&](const TextTrack& t) { return t.text == reading.text; });
+      if (!c.confirmed[r] || elsewhere) continue;
+      out.decided_by_sequence.push_back(reading.text);
+      out.tracks.push_back(std::move(reading));
       settled.push_back(c.undecided);
       --out.weak_places;
     }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "map/landmark.h"
+#include "mapping/row_sequence.h"
 #include "mapping/sighting_cast.h"
 #include "mapping/sightings.h"
 
@@ -58,6 +59,17 @@ struct ConsensusOptions {
   // sequence_radius_m, no rival reading there is, and it is not a landmark elsewhere (a
   // number is painted once on a level). Confirmed as any landmark must be. False: off.
   bool sequence_decides_contests = true;
+  // ... and the reading it takes need not be the most seen one: of the place's readings the
+  // one consecutive to a landmark nearby, when only one is (a worn 7 read as 2 more often than
+  // as 7, beside a landmark 6). Seen in min_frame_sets and confirmed as any landmark must be.
+  // False: only the most seen reading.
+  bool sequence_decides_for_any_reading = true;
+  // Further along a row than sequence_radius_m the row's numbering judges a place
+  // (row_sequence.h): a contested place takes the one reading seen in min_frame_sets that
+  // the rows or a landmark within sequence_radius_m put in sequence, and of two landmarks out
+  // of sequence side by side the one the rows allow stays whichever was seen more. False: off.
+  bool row_sequence = true;
+  RowSequenceOptions row;
 };
 
 // One text of the map to be: the sightings that agree on its reading.

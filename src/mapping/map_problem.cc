@@ -15,9 +15,13 @@ namespace parkloc::mapping {
 
 namespace {
 
-OdometrySigmas odometrySigmas(const geometry::Pose2& motion, const EstimationOptions& o) {
+// `calibrated`: the drive's constant scale error is estimated, so the white noise is all the
+// odometry factor has to allow for.
+OdometrySigmas odometrySigmas(const geometry::Pose2& motion, const EstimationOptions& o,
+                              bool calibrated) {
   const double distance = motion.translation().norm();
-  const double position = std::max(o.odometry_min_sigma_m, o.odometry_sigma_per_m * distance);
+  const double per_m = calibrated ? o.odometry_calibrated_sigma_per_m : o.odometry_sigma_per_m;
+  const double position = std::max(o.odometry_min_sigma_m, per_m * distance);
   return {position, position,
           std::max(o.odometry_min_yaw_sigma_rad, o.odometry_yaw_sigma_per_m * distance)};
 }
@@ -36,10 +40,11 @@ void requirePositive(const EstimationOptions& o) {
     if (!(value > 0.0))
       throw InputError(
           fmt::format("map_build.estimation.{} must be positive, not {}", name, value));
-  if (!(o.odometry_sigma_per_m >= 0.0) || !(o.odometry_yaw_sigma_per_m >= 0.0))
+  if (!(o.odometry_sigma_per_m >= 0.0) || !(o.odometry_calibrated_sigma_per_m >= 0.0) ||
+      !(o.odometry_yaw_sigma_per_m >= 0.0))
     throw InputError(
-        "map_build.estimation.odometry_sigma_per_m and odometry_yaw_sigma_per_m "
-        "must not be negative");
+        "map_build.estimation.odometry_sigma_per_m, odometry_calibrated_sigma_per_m and "
+        "odometry_yaw_sigma_per_m must not be negative");
 }
 
 }  // namespace
@@ -61,7 +66,9 @@ MapProblem::MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEsti
     problem_->AddParameterBlock(calibration, 2);
     double distance = 0.0;
     for (const geometry::Pose2& m : drive.motion) distance += m.translation().norm();
-    if (options.estimate_odometry_calibration && distance >= options.calibration_min_distance_m)
+    const bool calibrated =
+        options.estimate_odometry_calibration && distance >= options.calibration_min_distance_m;
+    if (calibrated)
       problem_->AddResidualBlock(
           OdometryCalibrationPrior::create(options.distance_scale_prior_sigma,
                                            options.yaw_rate_bias_prior_sigma),
@@ -78,10 +85,10 @@ MapProblem::MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEsti
     }
     for (size_t i = 0; i + 1 < drive.poses.size() && i < drive.motion.size(); ++i) {
       const double seconds = i < drive.seconds.size() ? drive.seconds[i] : 0.0;
-      problem_->AddResidualBlock(OdometryFactor::create(drive.motion[i], seconds,
-                                                        odometrySigmas(drive.motion[i], options)),
-                                 nullptr, drive.poses[i].data(), drive.poses[i + 1].data(),
-                                 calibration);
+      problem_->AddResidualBlock(
+          OdometryFactor::create(drive.motion[i], seconds,
+                                 odometrySigmas(drive.motion[i], options, calibrated)),
+          nullptr, drive.poses[i].data(), drive.poses[i + 1].data(), calibration);
       ++odometry_factors_;
     }
   }

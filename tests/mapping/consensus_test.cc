@@ -198,5 +198,53 @@ TEST(Consensus, TheSequenceDecidesAContestedPlace) {
             1);
 }
 
+TEST(Consensus, TheRowsNumberingDecidesAContestAndWhichNeighbourIsTheMisread) {
+  Readings r;
+  // A row along x, numbers growing with x: 356 and 357 decided.
+  for (size_t f = 0; f < 12; ++f) r.add("356", {0.0, 0.0}, f);
+  for (size_t f = 0; f < 12; ++f) r.add("357", {3.2, 0.0}, f);
+  // 10.7 m on, 361 misread 501 in more frame sets than 362 beside it is read.
+  for (size_t f = 0; f < 9; ++f) r.add("501", {13.9, 0.0}, f);
+  for (size_t f = 0; f < 6; ++f) r.add("362", {16.4, 0.0}, f);
+  // 16.4 m back, a worn 7 of 350 read 2 more often than 7: 2 is the wrong way along the row.
+  for (size_t f = 20; f < 28; ++f) r.add("352", {-16.4, 0.0}, f);
+  for (size_t f = 28; f < 35; ++f) r.add("350", {-16.4, 0.1}, f);
+  for (size_t f = 35; f < 36; ++f) r.add("349", {-16.4, -0.1}, f);  // once: does not compete
+  Consensus c = formConsensus(r.sightings, r.cast, {});
+  EXPECT_NE(find(c, "362"), nullptr);
+  EXPECT_EQ(find(c, "501"), nullptr);
+  EXPECT_EQ(c.out_of_sequence, std::vector<std::string>{"501"});
+  EXPECT_NE(find(c, "350"), nullptr);
+  EXPECT_EQ(find(c, "352"), nullptr);
+  EXPECT_EQ(c.decided_by_sequence, std::vector<std::string>{"350"});
+
+  // Without the rows: the more seen of the two neighbours stays, the contest stays open.
+  ConsensusOptions off;
+  off.row_sequence = false;
+  c = formConsensus(r.sightings, r.cast, off);
+  EXPECT_NE(find(c, "501"), nullptr);
+  EXPECT_EQ(find(c, "362"), nullptr);
+  EXPECT_EQ(find(c, "350"), nullptr);
+  EXPECT_TRUE(c.decided_by_sequence.empty());
+}
+
+TEST(Consensus, TheSequenceMayTakeALessSeenReadingOfAContestedPlace) {
+  Readings r;
+  for (size_t f = 0; f < 12; ++f) r.add("131", {5.3, 0.0}, f);
+  for (size_t f = 0; f < 12; ++f) r.add("133", {-0.4, 0.0}, f);
+  // 132 between them, read 152 nearly as often (less often here).
+  for (size_t f = 0; f < 8; ++f) r.add("152", {2.8, 0.0}, f);
+  for (size_t f = 8; f < 14; ++f) r.add("132", {2.8, 0.1}, f);
+  Consensus c = formConsensus(r.sightings, r.cast, {});
+  ASSERT_NE(find(c, "132"), nullptr);
+  EXPECT_EQ(find(c, "132")->frame_sets, 6);
+  EXPECT_EQ(find(c, "152"), nullptr);
+
+  ConsensusOptions most_seen_only;
+  most_seen_only.sequence_decides_for_any_reading = false;
+  c = formConsensus(r.sightings, r.cast, most_seen_only);
+  EXPECT_EQ(find(c, "132"), nullptr);
+}
+
 }  // namespace
 }  // namespace parkloc::mapping

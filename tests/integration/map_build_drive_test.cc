@@ -54,9 +54,11 @@ TEST(MapBuildDrive, BuildsTheMapOfAShortTourWithinCentimetres) {
   EXPECT_GE(c.position_m.count, 3u);
   EXPECT_LT(c.position_m.rmse, 0.03);
   EXPECT_LT(c.position_m.max, 0.10);
-  EXPECT_LT(c.abs_heading_deg.rmse, 1.0);
+  // Every legible number but one; the heading bound allows one number seen in few frame sets
+  // from one side (132 here, decided by the numbering's sequence, 2.5 deg off).
+  EXPECT_LT(c.abs_heading_deg.rmse, 1.5);
   EXPECT_LE(c.phantoms.size(), 1u);
-  EXPECT_GE(c.completeness, 0.5);
+  EXPECT_GE(c.completeness, 0.85);
   EXPECT_TRUE(build.estimation.converged) << build.estimation.message;
 }
 

@@ -41,7 +41,10 @@ void describe(OptionVisitor& v, mapping::ConsensusOptions& o) {
   v.value("min_margin", o.min_margin,
           "... and in this many times the runner-up reading's frame sets (else ambiguous)");
   v.value("loop_radius_m", o.loop_radius_m,
-          "two places of one reading this close are one text seen again (a loop)");
+          "two places of one reading this close are one text seen again (a loop) ...");
+  v.value("min_frame_sets_seen_apart", o.min_frame_sets_seen_apart,
+          "... unless both were read in this many of the same frame sets: two texts, one "
+          "misread (0: off)");
   v.value("min_confirmed_frame_sets", o.min_confirmed_frame_sets,
           "a landmark's reading read by the first recognizer, as a number of the numbering "
           "when there is one, in at least this many frame sets (0: every reading confirms)");

@@ -47,6 +47,18 @@ std::vector<Place> groupByPlace(const std::vector<std::optional<CastSighting>>& 
   return places;
 }
 
+// The frame sets that read both tracks: one text is at one place in a frame set, so two places
+// read together are two texts, however near.
+int seenTogether(const std::vector<Sighting>& sightings, const std::vector<size_t>& a,
+                 const std::vector<size_t>& b) {
+  std::set<FrameKey> in_a, both;
+  for (size_t i : a) in_a.insert({sightings[i].drive, sightings[i].frame});
+  for (size_t i : b)
+    if (in_a.count({sightings[i].drive, sightings[i].frame}))
+      both.insert({sightings[i].drive, sightings[i].frame});
+  return static_cast<int>(both.size());
+}
+
 // A place left out for a close runner-up or too little agreement: each of its readings as a
 // track (the most seen first), and whether it was confirmed.
 struct Contest {
@@ -181,7 +193,10 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
     for (size_t index : indices) {
       const TextTrack& other = candidates[index];
       auto near = std::find_if(places.begin(), places.end(), [&](const TextTrack& p) {
-        return (other.place - p.place).norm() <= options.loop_radius_m;
+        return (other.place - p.place).norm() <= options.loop_radius_m &&
+               (options.min_frame_sets_seen_apart <= 0 ||
+                seenTogether(sightings, p.sightings, other.sightings) <
+                    options.min_frame_sets_seen_apart);
       });
       if (near == places.end()) {
         places.push_back(other);

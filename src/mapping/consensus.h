@@ -46,8 +46,12 @@ struct ConsensusOptions {
   // and never by the first reader); a free reading that recurs is a car's plate or part of a
   // number ("04", "LI110" for B1-115 on the train drives). 0: every reading confirms.
   int min_confirmed_frame_sets = 3;
-  // Two places with the same winning reading this close are one text seen twice (a loop).
+  // Two places with the same winning reading this close are one text seen twice (a loop) ...
   double loop_radius_m = 4.0;
+  // ... unless both were read in this many of the same frame sets: a text is at one place in
+  // a frame set, so they are two texts, one of them misread as the other (a 1 read as 2 in a
+  // font that blurs them, next to the 2 in the bay beside it). 0: off.
+  int min_frame_sets_seen_apart = 2;
   // Bays are numbered in sequence along a row (a bay is 2.3-3 m wide): two landmarks of one
   // format within this distance whose numbers are not consecutive hold a misread that won its
   // place, and the one seen in fewer frame sets is left out (070 in 18 frame sets beside 019

@@ -246,5 +246,28 @@ TEST(Consensus, TheSequenceMayTakeALessSeenReadingOfAContestedPlace) {
   EXPECT_EQ(find(c, "132"), nullptr);
 }
 
+TEST(Consensus, TwoPlacesReadTogetherAreTwoTextsNotALoop) {
+  Readings r;
+  // A012 and, 2.5 m before it, A011 read as A012 in the same frame sets (a 1 read as 2):
+  // near enough for a loop, but one text is at one place in a frame set.
+  for (size_t f = 0; f < 12; ++f) r.add("A012", {2.5, 0.0}, f);
+  for (size_t f = 4; f < 9; ++f) r.add("A012", {0.0, 0.0}, f);
+  Consensus c = formConsensus(r.sightings, r.cast, {});
+  const TextTrack* kept = find(c, "A012");
+  ASSERT_NE(kept, nullptr);
+  EXPECT_EQ(kept->frame_sets, 12);
+  EXPECT_NEAR(kept->place.x(), 2.5, 1e-9);
+  EXPECT_EQ(c.loops, 0u);
+  EXPECT_EQ(c.outweighed_duplicates, std::vector<std::string>{"A012"});
+
+  // Without the check the two merge into one landmark between them.
+  ConsensusOptions off;
+  off.min_frame_sets_seen_apart = 0;
+  c = formConsensus(r.sightings, r.cast, off);
+  ASSERT_NE(find(c, "A012"), nullptr);
+  EXPECT_EQ(c.loops, 1u);
+  EXPECT_LT(find(c, "A012")->place.x(), 2.0);
+}
+
 }  // namespace
 }  // namespace parkloc::mapping

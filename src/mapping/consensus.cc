@@ -20,10 +20,15 @@ struct Place {
 
 using FrameKey = std::pair<size_t, size_t>;  // (drive, frame set)
 
-int distinctFrameSets(const std::vector<Sighting>& sightings, const std::vector<size_t>& members) {
+std::set<FrameKey> frameSetsOf(const std::vector<Sighting>& sightings,
+                               const std::vector<size_t>& members) {
   std::set<FrameKey> frames;
   for (size_t i : members) frames.insert({sightings[i].drive, sightings[i].frame});
-  return static_cast<int>(frames.size());
+  return frames;
+}
+
+int distinctFrameSets(const std::vector<Sighting>& sightings, const std::vector<size_t>& members) {
+  return static_cast<int>(frameSetsOf(sightings, members).size());
 }
 
 std::vector<Place> groupByPlace(const std::vector<std::optional<CastSighting>>& cast,
@@ -51,20 +56,23 @@ std::vector<Place> groupByPlace(const std::vector<std::optional<CastSighting>>& 
 // read together are two texts, however near.
 int seenTogether(const std::vector<Sighting>& sightings, const std::vector<size_t>& a,
                  const std::vector<size_t>& b) {
-  std::set<FrameKey> in_a, both;
-  for (size_t i : a) in_a.insert({sightings[i].drive, sightings[i].frame});
-  for (size_t i : b)
-    if (in_a.count({sightings[i].drive, sightings[i].frame}))
-      both.insert({sightings[i].drive, sightings[i].frame});
-  return static_cast<int>(both.size());
+  const std::set<FrameKey> in_a = frameSetsOf(sightings, a);
+  const std::set<FrameKey> in_b = frameSetsOf(sightings, b);
+  return static_cast<int>(std::count_if(in_b.begin(), in_b.end(),
+                                        [&](const FrameKey& k) { return in_a.count(k) > 0; }));
 }
 
-// A place left out for a close runner-up or too little agreement: each of its readings as a
-// track (the most seen first), and whether it was confirmed.
+// One reading of a place as a track, and whether it was confirmed.
+struct Reading {
+  TextTrack track;
+  bool confirmed = false;
+};
+
+// A place left out for a close runner-up or too little agreement: each of its readings, the
+// most seen first.
 struct Contest {
   size_t undecided;  // index into Consensus::undecided
-  std::vector<TextTrack> readings;
-  std::vector<bool> confirmed;
+  std::vector<Reading> readings;
 };
 
 // Whether `text` is one number from a landmark within `radius` of `place`.
@@ -147,7 +155,7 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
       if (best.first < options.min_frame_sets) continue;
     }
     // A reading of the place as a track, and whether it was confirmed.
-    const auto trackOf = [&](const std::vector<size_t>& members) {
+    const auto readingOf = [&](const std::vector<size_t>& members) {
       TextTrack track;
       track.text = sightings[members.front()].text;
       track.cls = sightings[members.front()].cls;
@@ -159,27 +167,24 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
       std::vector<size_t> confirmed;
       for (size_t i : members)
         if (!sightings[i].second_opinion && !sightings[i].off_numbering) confirmed.push_back(i);
-      return std::make_pair(
-          track, distinctFrameSets(sightings, confirmed) >= options.min_confirmed_frame_sets);
+      return Reading{std::move(track),
+                     distinctFrameSets(sightings, confirmed) >= options.min_confirmed_frame_sets};
     };
-    auto [track, is_confirmed] = trackOf(*winner);
+    Reading won = readingOf(*winner);
     if (contested) {
-      Contest c{out.undecided.size() - 1, {std::move(track)}, {is_confirmed}};
-      for (const auto& [text, members] : by_text) {
-        if (&members == winner || winning_text.find(text) != std::string::npos) continue;
-        auto [rival, rival_confirmed] = trackOf(members);
-        c.readings.push_back(std::move(rival));
-        c.confirmed.push_back(rival_confirmed);
-      }
+      Contest c{out.undecided.size() - 1, {std::move(won)}};
+      for (const auto& [text, members] : by_text)
+        if (&members != winner && winning_text.find(text) == std::string::npos)
+          c.readings.push_back(readingOf(members));
       contests.push_back(std::move(c));
       continue;
     }
-    if (!is_confirmed) {
+    if (!won.confirmed) {
       ++out.unconfirmed_places;
       undecided("unconfirmed");
       continue;
     }
-    candidates.push_back(std::move(track));
+    candidates.push_back(std::move(won.track));
   }
 
   // One reading at several places: a loop when they are near. Far apart, it is a number
@@ -227,18 +232,20 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
   // allow both or neither, the one seen in more frame sets.
   if (options.sequence_radius_m > 0.0) {
     const RowSequence rows = rowsOf(out.tracks, options);
-    const auto allowed = [&](const TextTrack& t) { return rows.allows(t.text, t.place); };
+    std::vector<bool> allowed;
+    for (const TextTrack& t : out.tracks) allowed.push_back(rows.allows(t.text, t.place));
     std::vector<TextTrack> kept;
-    for (const TextTrack& t : out.tracks) {
-      const bool outvoted =
-          std::any_of(out.tracks.begin(), out.tracks.end(), [&](const TextTrack& u) {
-            const auto apart = map::numbersApart(t.text, u.text);
-            if (&u == &t || !apart || *apart == 1 ||
-                (u.place - t.place).norm() > options.sequence_radius_m)
-              return false;
-            if (allowed(t) != allowed(u)) return allowed(u);
-            return u.frame_sets > t.frame_sets;
-          });
+    for (size_t i = 0; i < out.tracks.size(); ++i) {
+      const TextTrack& t = out.tracks[i];
+      bool outvoted = false;
+      for (size_t j = 0; j < out.tracks.size() && !outvoted; ++j) {
+        const TextTrack& u = out.tracks[j];
+        const auto apart = map::numbersApart(t.text, u.text);
+        if (j == i || !apart || *apart == 1 ||
+            (u.place - t.place).norm() > options.sequence_radius_m)
+          continue;
+        outvoted = allowed[i] != allowed[j] ? allowed[j] : u.frame_sets > t.frame_sets;
+      }
       if (outvoted)
         out.out_of_sequence.push_back(t.text);
       else
@@ -258,7 +265,7 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
       // to a landmark nearby or that the rows allow, if only one is.
       std::vector<size_t> in_sequence;
       for (size_t r = 0; r < c.readings.size(); ++r) {
-        const TextTrack& reading = c.readings[r];
+        const TextTrack& reading = c.readings[r].track;
         if (reading.frame_sets < options.min_frame_sets) continue;
         if (inSequence(reading.text, reading.place, decided, radius) ||
             rows.allows(reading.text, reading.place))
@@ -267,12 +274,12 @@ Consensus formConsensus(const std::vector<Sighting>& sightings,
       if (in_sequence.size() != 1) continue;
       const size_t r = in_sequence.front();
       if (r != 0 && !options.sequence_decides_for_any_reading) continue;
-      TextTrack& reading = c.readings[r];
+      TextTrack& reading = c.readings[r].track;
       // Against the tracks as they grow: two contests won by one reading make one landmark.
       const bool elsewhere =
           std::any_of(out.tracks.begin(), out.tracks.end(),
                       [&](const TextTrack& t) { return t.text == reading.text; });
-      if (!c.confirmed[r] || elsewhere) continue;
+      if (!c.readings[r].confirmed || elsewhere) continue;
       out.decided_by_sequence.push_back(reading.text);
       out.tracks.push_back(std::move(reading));
       settled.push_back(c.undecided);

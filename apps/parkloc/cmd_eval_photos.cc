@@ -2,8 +2,9 @@
 // (eval/photo_recall.h), once per model parkloc ships that finds or reads text, each in the
 // role that reads a photo: the spotter as configured (PaddleOCR's detector and recognizer
 // reading first), then with parkloc's floor detector, its band detector and its tuned
-// recognizer in their place. A model trained on renders alone could forget real text; this is
-// the check that it has not. With --min-recall, a row below it makes the command fail.
+// recognizer in their place, each detector with its own post-processing. A model trained on renders
+// alone could forget real text; this is the check that it has not. With --min-recall, a row below
+// it makes the command fail.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -50,12 +51,21 @@ std::vector<ModelRow> modelRows(const config::Config& config) {
   const auto chosen = [](const std::string& configured_file, const std::string& shipped) {
     return configured_file.empty() ? shipped : configured_file;
   };
+  // A detector comes with the post-processing it was trained for: the floor and band detectors
+  // learned DB's thin shrunk kernels (r = 0.4), which PaddleOCR's box threshold and unclip
+  // ratio would drop or crop into the glyphs, and the floor detector's boxes are read with
+  // its margins.
   ModelRow floor{"floor_detector", "floor detector as the detector", configured};
   floor.options.models.detection =
       chosen(configured.models.floor_detection, ocr::floorDetectorIn(dir));
+  ocr::DetectionOptions& floor_detection = floor.options.detection;
+  floor_detection.scene_db = floor_detection.floor_db;
+  floor_detection.scene_read_expand_x = floor_detection.floor_read_expand_x;
+  floor_detection.scene_read_expand_y = floor_detection.floor_read_expand_y;
   ModelRow band{"band_detector", "band detector as the detector", configured};
   band.options.models.detection =
       chosen(configured.models.band_detection, ocr::bandDetectorIn(dir));
+  band.options.detection.scene_db = band.options.detection.band_db;
   ModelRow tuned{"second_recognizer", "second recognizer reading first", configured};
   tuned.options.models.recognition =
       chosen(configured.models.fallback_recognition, ocr::tunedRecognizerIn(dir));

@@ -56,6 +56,9 @@ void describe(OptionVisitor& v, ocr::DetectionOptions& o) {
           "a raw image is detected at this longer side: PaddleOCR's own input size");
   v.section("scene_db", "PaddleOCR's post-processing for its own detector",
             [&] { describe(v, o.scene_db); });
+  v.value("scene_read_expand_x", o.scene_read_expand_x,
+          "a raw image's boxes are read from a crop grown by this along the text (1: as found)");
+  v.value("scene_read_expand_y", o.scene_read_expand_y, "... and by this across it");
   v.section("floor_view", "the floor's bird's-eye view the floor detector looks at",
             [&] { describe(v, o.floor_view); });
   v.section("floor_db", "the floor detector's post-processing (trained on DB kernels r = 0.4)",

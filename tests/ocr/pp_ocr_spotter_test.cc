@@ -605,6 +605,25 @@ TEST(PpOcrSpotterModels, TheFloorDetectorsBoxIsReadWithAMarginAndReportedAsDetec
   EXPECT_LT(maxCornerError(with_margin.found[0].polygon, without.found[0].polygon), 0.01);
 }
 
+// In the raw image's role (a photo, `parkloc eval photos`) the floor detector comes with its
+// own post-processing: its thin kernels grown by floor_db's ratio and read with its margins
+// find the words of a line of ordinary text, each box on one word or the whole line.
+TEST(PpOcrSpotterModels, TheFloorDetectorReadsALineOfOrdinaryTextWithItsOwnPostProcessing) {
+  const cv::Mat line = testing::renderTextLine("EXIT 42 HARBOUR", 22, 30);
+  PpOcrOptions options;
+  options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
+  options.models.detection = floorDetectorIn(PARKLOC_MODEL_DIR);
+  DetectionOptions& detection = options.detection;
+  detection.scene_db = detection.floor_db;
+  detection.scene_read_expand_x = detection.floor_read_expand_x;
+  detection.scene_read_expand_y = detection.floor_read_expand_y;
+  PpOcrSpotter spotter(options);
+  std::string read;
+  for (const TextInstance& inst : spotter.spot(line, {})) read += inst.text + " ";
+  for (const char* word : {"EXIT", "42", "HARBOUR"})
+    EXPECT_NE(read.find(word), std::string::npos) << word << " not in: " << read;
+}
+
 // A floor box whose ink fit is off or fails says so (box_only), and is reported grown from the
 // detector's kernel by floor_unfitted_unclip_ratio when that is set: smaller than DB's box.
 TEST(PpOcrSpotterModels, AFloorBoxWithoutAnInkFitSaysSoAndTakesTheUnfittedMargin) {

@@ -66,9 +66,9 @@ def normalise(bgr):
     return x.transpose(2, 0, 1)
 
 
-def augment(image, care, dont, crop, rng):
+def augment(image, care, dont, crop, rng, scales=(0.8, 1.25)):
     h, w = image.shape[:2]
-    scale = rng.uniform(0.8, 1.25)
+    scale = rng.uniform(*scales)
     m = np.array([[scale, 0, 0], [0, scale, 0]], np.float32)
     # Centre the crop on a text instance most of the time, so that batches hold text.
     if care and rng.random() < 0.8:
@@ -196,6 +196,9 @@ def main():
     ap.add_argument("--lr", type=float, default=5e-4)
     ap.add_argument("--val-every", type=int, default=100)
     ap.add_argument("--val-images", type=int, default=60)
+    ap.add_argument("--scale", type=float, nargs=2, default=[0.8, 1.25], metavar=("MIN", "MAX"),
+                    help="range of the views' random scale (below 1: text smaller than the "
+                         "floor view draws it, as a photo's may be)")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--keep", default="",
@@ -252,7 +255,7 @@ def main():
         batch, targets, weights = [], [], []
         for _ in range(args.batch):
             path, care, dont = train[rng.randrange(len(train))]
-            img, c, d = augment(read_view(path), care, dont, args.crop, rng)
+            img, c, d = augment(read_view(path), care, dont, args.crop, rng, args.scale)
             t, w = probability_targets((args.crop, args.crop), c, d)
             batch.append(normalise(img))
             targets.append(t)

@@ -40,6 +40,8 @@ Detections detect(const cv::Mat& image, DetectorRole role, const PpOcrModels& mo
   Detections out;
   const DbDetector* detector = &models.detector;
   const DbOptions* db = &options.scene_db;
+  out.read_expand_x = options.scene_read_expand_x;
+  out.read_expand_y = options.scene_read_expand_y;
   if (role == DetectorRole::kFloorView && models.floor_detector) {
     detector = &*models.floor_detector;
     db = &options.floor_db;
@@ -48,6 +50,7 @@ Detections detect(const cv::Mat& image, DetectorRole role, const PpOcrModels& mo
   } else if (role == DetectorRole::kRawBand && models.band_detector) {
     detector = &*models.band_detector;
     db = &options.band_db;
+    out.read_expand_x = out.read_expand_y = 1.f;
   }
   const cv::Mat probability = detector->probability({resized})[0];
   const float sx = float(image.cols) / probability.cols, sy = float(image.rows) / probability.rows;

@@ -36,6 +36,12 @@ struct DetectionOptions {
   // PaddleOCR's post-processing, for its detector wherever it runs: raw images, map-guided
   // patches, and the floor view or the band when no detector of their own is given.
   DbOptions scene_db;
+  // A raw image's boxes are read from a crop grown by these (along, across the text):
+  // PaddleOCR's boxes carry their margin (unclip 1.5) and are read as they are. Another
+  // detector in the raw image's role (the floor or band detector on a photo, `parkloc eval
+  // photos`) comes with its own post-processing and margins.
+  float scene_read_expand_x = 1.f;
+  float scene_read_expand_y = 1.f;
   // The bird's-eye view of the floor the floor detector looks at.
   GroundViewOptions floor_view;
   // The floor detector was trained on DB's shrunk kernels (r = 0.4,

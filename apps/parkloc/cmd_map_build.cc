@@ -174,6 +174,9 @@ void run(const MapBuildArgs& a) {
   }
   if (!build.inconsistent.empty())
     fmt::print("  left out, corners fit no floor text: {}\n", fmt::join(build.inconsistent, ", "));
+  if (!build.stencil_heights.empty())
+    fmt::print("  height set to the stencil's, the corners' too far off it: {}\n",
+               fmt::join(build.stencil_heights, ", "));
   if (!build.consensus.out_of_sequence.empty())
     fmt::print("  left out, out of the numbering's sequence beside a better-seen number: {}\n",
                fmt::join(build.consensus.out_of_sequence, ", "));

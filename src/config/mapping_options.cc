@@ -108,6 +108,13 @@ void describe(OptionVisitor& v, mapping::MapBuildOptions& o) {
           "a landmark whose corners reproject worse (median, px) is no floor text: left out");
   v.value("max_rms_px", o.max_rms_px,
           "... or worse in the RMS (px): a box over a pillar's text and the floor");
+  v.section("stencil", "one stencil paints a level's numbers: a height far off it takes it", [&] {
+    v.value("tolerance", o.stencil.tolerance,
+            "a landmark whose height is off its class's median by more than this share takes "
+            "the median (0: every height as estimated)");
+    v.value("min_landmarks", o.stencil.min_landmarks,
+            "... in a class of at least this many landmarks");
+  });
 }
 
 }  // namespace parkloc::config

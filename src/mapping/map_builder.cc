@@ -164,6 +164,7 @@ MapBuild estimateMap(const std::vector<const geometry::Rig*>& rigs,
   }
   if (!build.estimation.converged)
     build.problems.push_back("the estimation did not converge: " + build.estimation.message);
+  build.stencil_heights = applyStencilHeight(build.landmarks, options.stencil);
 
   for (size_t d = 0; d < poses.size(); ++d) {
     DriveOutcome drive;

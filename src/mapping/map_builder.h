@@ -13,6 +13,7 @@
 #include "mapping/landmark_estimate.h"
 #include "mapping/map_problem.h"
 #include "mapping/sightings.h"
+#include "mapping/stencil_height.h"
 #include "mapping/survey_poses.h"
 #include "ocr/text_spotter.h"
 
@@ -35,6 +36,8 @@ struct MapBuildOptions {
   // medians at most 3.3 px (71 landmarks).
   double max_median_px = 6.0;
   double max_rms_px = 20.0;
+  // Heights too far off their class's stencil height take it (stencil_height.h).
+  StencilOptions stencil;
 };
 
 struct DriveOutcome {
@@ -60,6 +63,7 @@ struct MapBuild {
   std::vector<DriveOutcome> drives;
   Consensus consensus;  // counts and duplicates; its tracks are the landmarks' sightings
   std::vector<std::string> inconsistent;  // left out by MapBuildOptions::max_median_px, max_rms_px
+  std::vector<std::string> stencil_heights;  // heights set by MapBuildOptions::stencil
   EstimationSummary estimation;
   bool has_uncertainty = false;
   // The numbering formats the drives were read against (given, then learnt).

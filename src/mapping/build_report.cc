@@ -109,6 +109,7 @@ nlohmann::json buildReportJson(const MapBuild& build, const std::string& level) 
             {"seconds", e.seconds},
             {"ms_per_frame_set", optimisation_per_frame},
             {"corner_factors", e.corner_factors},
+            {"unprojected_corners", e.unprojected_corners},
             {"odometry_factors", e.odometry_factors},
             {"has_uncertainty", build.has_uncertainty}}},
           {"landmarks_by_frame_sets", sightingHistogram(build)},

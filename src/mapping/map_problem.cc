@@ -107,9 +107,18 @@ MapProblem::MapProblem(std::vector<DriveState>& drives, std::vector<LandmarkEsti
       const geometry::RigCamera& camera = drive.rig->cameras[static_cast<size_t>(s.camera)];
       double* margin = &drive.corner_margin_px[s.box_only ? 1 : 0];
       for (int k = 0; k < 4; ++k) {
-        auto* factor = new CornerFactor(camera, k, s.pixels, options.pixel_sigma);
+        auto factor = std::make_unique<CornerFactor>(camera, k, s.pixels, options.pixel_sigma);
+        // A corner that does not project into its camera from where the landmark starts (a
+        // sighting cast far off its landmark's seed) would fail the solver's first evaluation
+        // and with it the whole solve: it is left out.
+        const double* at[3] = {drive.poses[s.frame].data(), landmark, margin};
+        double residual[2];
+        if (!factor->Evaluate(at, residual, nullptr)) {
+          ++unprojected_corners_;
+          continue;
+        }
         const ceres::ResidualBlockId id = problem_->AddResidualBlock(
-            factor, loss_.get(), drive.poses[s.frame].data(), landmark, margin);
+            factor.release(), loss_.get(), drive.poses[s.frame].data(), landmark, margin);
         corners_.push_back({t, id});
       }
     }
@@ -137,6 +146,7 @@ EstimationSummary MapProblem::solve() {
   out.final_cost = summary.final_cost;
   out.seconds = summary.total_time_in_seconds;
   out.corner_factors = static_cast<int>(corners_.size());
+  out.unprojected_corners = unprojected_corners_;
   out.odometry_factors = odometry_factors_;
   for (LandmarkEstimate& l : landmarks_)
     l.parameters[kHeading] = geometry::wrapAngle(l.parameters[kHeading]);

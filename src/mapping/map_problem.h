@@ -90,6 +90,7 @@ struct EstimationSummary {
   double final_cost = 0.0;
   double seconds = 0.0;
   int corner_factors = 0;
+  int unprojected_corners = 0;  // left out: behind their camera where the estimation starts
   int odometry_factors = 0;
 };
 
@@ -123,6 +124,7 @@ class MapProblem {
   std::unique_ptr<ceres::Problem> problem_;
   std::vector<CornerBlock> corners_;
   int odometry_factors_ = 0;
+  int unprojected_corners_ = 0;
 };
 
 }  // namespace parkloc::mapping

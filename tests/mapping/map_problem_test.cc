@@ -198,6 +198,50 @@ TEST(MapProblem, RefusesASigmaThatIsNotPositive) {
   EXPECT_THROW(estimateMap({&survey.rig}, {odometry}, survey.sightings, options), InputError);
 }
 
+// A sighting whose corners do not project into its camera where the estimation starts (here a
+// landmark's sighting given to the camera facing the other way) is left out, not the solve.
+TEST(MapProblem, ACornerBehindItsCameraIsLeftOutAndTheRestSolves) {
+  const auto survey = makeSurvey();
+  const SurveyPoses odometry = biasedOdometry(survey.poses, 1.0, 0.0);
+  const MapBuild build = estimateMap({&survey.rig}, {odometry}, survey.sightings, {});
+  ASSERT_FALSE(build.consensus.tracks.empty());
+  std::vector<Sighting> sightings = survey.sightings;
+  std::vector<TextTrack> tracks = build.consensus.tracks;
+  Sighting away = sightings[tracks[0].sightings.front()];
+  // The camera whose optical axis points most nearly opposite the sighting's own.
+  const auto axis = [&](int c) {
+    return survey.rig.cameras[static_cast<size_t>(c)].vehicle_from_camera.rotation().col(2);
+  };
+  int opposite = away.camera;
+  for (int c = 0; c < static_cast<int>(survey.rig.cameras.size()); ++c)
+    if (axis(c).dot(axis(away.camera)) < axis(opposite).dot(axis(away.camera))) opposite = c;
+  ASSERT_NE(away.camera, opposite);
+  away.camera = opposite;
+  sightings.push_back(away);
+  tracks[0].sightings.push_back(sightings.size() - 1);
+
+  std::vector<DriveState> drives(1);
+  drives[0].rig = &survey.rig;
+  for (const geometry::Pose2& p : odometry.map_from_vehicle)
+    drives[0].poses.push_back({p.x, p.y, p.yaw});
+  drives[0].motion = odometry.motion;
+  for (size_t i = 0; i + 1 < odometry.timestamps.size(); ++i)
+    drives[0].seconds.push_back(odometry.timestamps[i + 1] - odometry.timestamps[i]);
+  std::vector<LandmarkEstimate> landmarks = build.landmarks;
+  MapProblem problem(drives, landmarks, sightings, tracks, {});
+  const EstimationSummary summary = problem.solve();
+  EXPECT_TRUE(summary.converged) << summary.message;
+  EXPECT_GT(summary.unprojected_corners, 0);
+  EXPECT_LE(summary.unprojected_corners, 4);
+  for (const LandmarkEstimate& l : landmarks)
+    for (const auto& t : survey.truth)
+      if (t.text == l.text)
+        EXPECT_LT(
+            std::hypot(l.parameters[kX] - t.parameters[kX], l.parameters[kY] - t.parameters[kY]),
+            1e-3)
+            << l.text;
+}
+
 TEST(MapProblem, RobustLossKeepsAMisplacedCornerFromMovingTheLandmark) {
   auto survey = makeSurvey();
   std::mt19937 rng(3);

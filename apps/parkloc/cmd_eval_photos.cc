@@ -18,6 +18,7 @@
 #include "common/error.h"
 #include "eval/photo_recall.h"
 #include "ocr/ocr_io.h"
+#include "ocr/ppocr/detection.h"
 #include "ocr/ppocr/pp_ocr_spotter.h"
 
 namespace parkloc::app {
@@ -51,21 +52,17 @@ std::vector<ModelRow> modelRows(const config::Config& config) {
   const auto chosen = [](const std::string& configured_file, const std::string& shipped) {
     return configured_file.empty() ? shipped : configured_file;
   };
-  // A detector comes with the post-processing it was trained for: the floor and band detectors
-  // learned DB's thin shrunk kernels (r = 0.4), which PaddleOCR's box threshold and unclip
-  // ratio would drop or crop into the glyphs, and the floor detector's boxes are read with
-  // its margins.
+  // A detector comes with the post-processing it was trained for (ocr::withRawImagesReadAs).
   ModelRow floor{"floor_detector", "floor detector as the detector", configured};
   floor.options.models.detection =
       chosen(configured.models.floor_detection, ocr::floorDetectorIn(dir));
-  ocr::DetectionOptions& floor_detection = floor.options.detection;
-  floor_detection.scene_db = floor_detection.floor_db;
-  floor_detection.scene_read_expand_x = floor_detection.floor_read_expand_x;
-  floor_detection.scene_read_expand_y = floor_detection.floor_read_expand_y;
+  floor.options.detection =
+      ocr::withRawImagesReadAs(ocr::DetectorRole::kFloorView, configured.detection);
   ModelRow band{"band_detector", "band detector as the detector", configured};
   band.options.models.detection =
       chosen(configured.models.band_detection, ocr::bandDetectorIn(dir));
-  band.options.detection.scene_db = band.options.detection.band_db;
+  band.options.detection =
+      ocr::withRawImagesReadAs(ocr::DetectorRole::kRawBand, configured.detection);
   ModelRow tuned{"second_recognizer", "second recognizer reading first", configured};
   tuned.options.models.recognition =
       chosen(configured.models.fallback_recognition, ocr::tunedRecognizerIn(dir));

@@ -27,9 +27,6 @@ struct LandmarkEstimate {
   double rms_px = 0.0;      // corner reprojection error after the estimation
   double median_px = 0.0;   // its median over the corners: what most of them say
   int outlier_corners = 0;  // corners the robust loss mostly ignores
-  // Its height is its class's stencil height, the corners' being too far off it
-  // (stencil_height.h).
-  bool stencil_height = false;
   // Set by merging: the existing map had it elsewhere (metres moved), or not at all.
   std::optional<double> moved_m;
   bool added = false;

@@ -22,7 +22,6 @@ std::vector<std::string> applyStencilHeight(std::vector<LandmarkEstimate>& landm
       if (l.cls != cls) continue;
       if (std::fabs(l.parameters[kHeight] / median - 1.0) <= options.tolerance) continue;
       l.parameters[kHeight] = median;
-      l.stencil_height = true;
       set.push_back(l.text);
     }
   }

@@ -26,8 +26,7 @@ struct StencilOptions {
   int min_landmarks = 5;
 };
 
-// Applies the rule to `landmarks` (LandmarkEstimate::stencil_height marks the ones it set) and
-// returns their texts.
+// Applies the rule to `landmarks` and returns the texts whose height it set.
 std::vector<std::string> applyStencilHeight(std::vector<LandmarkEstimate>& landmarks,
                                             const StencilOptions& options);
 

@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "geometry/rig.h"
+#include "ocr/ppocr/detection.h"
 #include "ocr/ppocr/pp_ocr_networks.h"
 #include "synthetic_text.h"
 
@@ -613,10 +614,10 @@ TEST(PpOcrSpotterModels, TheFloorDetectorReadsALineOfOrdinaryTextWithItsOwnPostP
   PpOcrOptions options;
   options.models = PpOcrModelPaths::inDirectory(PARKLOC_MODEL_DIR);
   options.models.detection = floorDetectorIn(PARKLOC_MODEL_DIR);
-  DetectionOptions& detection = options.detection;
-  detection.scene_db = detection.floor_db;
-  detection.scene_read_expand_x = detection.floor_read_expand_x;
-  detection.scene_read_expand_y = detection.floor_read_expand_y;
+  options.detection = withRawImagesReadAs(DetectorRole::kFloorView, options.detection);
+  ASSERT_FLOAT_EQ(options.detection.scene_db.box_threshold,
+                  options.detection.floor_db.box_threshold);
+  ASSERT_FLOAT_EQ(options.detection.scene_read_expand_y, options.detection.floor_read_expand_y);
   PpOcrSpotter spotter(options);
   std::string read;
   for (const TextInstance& inst : spotter.spot(line, {})) read += inst.text + " ";

@@ -8,9 +8,10 @@ looking at the real photographs (which are measured, never tuned on):
 
 Four sets, each its own folder with labels.tsv: `small_words` (single words 14-22 px tall),
 `lines` (lines of 2-5 words, 14-22 px, three heights apart), `dense_lines` (the same, 1.35
-heights apart, as a page or a sign of several lines), `large_words` (single words 18-60 px). Dark text
-on a light ground and light on dark alike, in every installed Latin font (generic_crops.py's
-words and fonts); a word is scored as `parkloc eval photos` scores a photo's.
+heights apart, as a page or a sign of several lines), `large_words` (single words 18-60 px).
+Dark text on a light ground and light on dark alike, in every installed Latin font
+(generic_crops.py's words and fonts); a word is scored as `parkloc eval photos` scores a
+photo's.
 """
 import argparse
 import os

@@ -21,6 +21,18 @@ int roundToStride(double v) {
 
 }  // namespace
 
+DetectionOptions withRawImagesReadAs(DetectorRole role, DetectionOptions options) {
+  if (role == DetectorRole::kFloorView) {
+    options.scene_db = options.floor_db;
+    options.scene_read_expand_x = options.floor_read_expand_x;
+    options.scene_read_expand_y = options.floor_read_expand_y;
+  } else if (role == DetectorRole::kRawBand) {
+    options.scene_db = options.band_db;
+    options.scene_read_expand_x = options.scene_read_expand_y = 1.f;
+  }
+  return options;
+}
+
 Detections detect(const cv::Mat& image, DetectorRole role, const PpOcrModels& models,
                   const DetectionOptions& options, float detection_scale, int max_reads) {
   // A floor view's scale is its resolution, chosen for the floor detector: a view wider than

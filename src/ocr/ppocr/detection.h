@@ -103,6 +103,13 @@ struct Detections {
   float read_expand_x = 1.f, read_expand_y = 1.f;
 };
 
+// `options` with the raw image read by the post-processing (and reading margins) of the
+// detector of `role` instead of PaddleOCR's: for that detector in PaddleOCR's place on a photo
+// (`parkloc eval photos`). The floor and band detectors learned DB's thin shrunk kernels
+// (r = 0.4), which PaddleOCR's box threshold and unclip ratio would drop or crop into the
+// glyphs. kScene gives `options` back.
+DetectionOptions withRawImagesReadAs(DetectorRole role, DetectionOptions options);
+
 // Runs the detector of `role` on `image`, scaled by `detection_scale` (SpotRequest) on top of
 // the role's own scale. With `max_reads` > 0 (SpotRequest::max_reads), at most that many boxes,
 // the confident ones first (readingPriority).
